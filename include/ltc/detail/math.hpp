@@ -1,0 +1,84 @@
+// ltc/detail/math.hpp -- scalar helpers shared by the headers (not part of the public API).
+//
+// Domain-safe functions in the spirit of pbrt-v4's SafeSqrt/SafeASin: they clamp the tiny
+// excursions that rounding produces instead of returning NaN.
+#pragma once
+
+#include <ltc/config.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace ltc {
+
+/// pi in the precision of T.
+template <typename T>
+LTC_HOST_DEVICE constexpr T pi() {
+    return static_cast<T>(3.141592653589793238462643383279502884L);
+}
+
+namespace detail {
+
+template <typename T>
+LTC_HOST_DEVICE inline T safe_sqrt(T x) {
+    return std::sqrt(x > T(0) ? x : T(0));
+}
+
+template <typename T>
+LTC_HOST_DEVICE inline bool is_finite(const glm::vec<3, T>& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// Unit vector along v, or the zero vector when v is zero (a vertex at the shading point).
+/// Scales by the largest component first so that neither |v|^2 overflows for huge inputs
+/// nor underflows for tiny (even subnormal) ones.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
+    const T m = glm::max(glm::max(std::abs(v.x), std::abs(v.y)), std::abs(v.z));
+    if (!(m > T(0))) return glm::vec<3, T>(T(0));
+    const glm::vec<3, T> s = v / m;
+    return s / std::sqrt(glm::dot(s, s));
+}
+
+/// a x b for unit vectors, accurate to a few ulps *relative to |a x b|* even when a and b are
+/// nearly parallel or nearly opposite: a x b = a x (b - a) = a x (b + a), and the difference
+/// (or sum) of two nearly equal vectors is computed almost exactly (Sterbenz), so the
+/// cancellation that a plain cross product suffers never happens.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> stable_cross(const glm::vec<3, T>& a, const glm::vec<3, T>& b,
+                                                   T a_dot_b) {
+    return glm::cross(a, a_dot_b >= T(0) ? b - a : b + a);
+}
+
+/// a*b - c*d with one rounding error (Kahan's algorithm with FMA, as pbrt-v4's
+/// DifferenceOfProducts): used for determinants and inverses of M.
+template <typename T>
+LTC_HOST_DEVICE inline T difference_of_products(T a, T b, T c, T d) {
+    const T cd = c * d;
+    const T err = std::fma(-c, d, cd);
+    const T dop = std::fma(a, b, -cd);
+    return dop + err;
+}
+
+}  // namespace detail
+}  // namespace ltc
+
+namespace ltc {
+namespace detail {
+
+/// (sin t cos phi, sin t sin phi, cos t): the supplement's spherical parameterization.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> spherical_direction(T cos_theta, T sin_theta, T phi) {
+    return glm::vec<3, T>(std::cos(phi) * sin_theta, std::sin(phi) * sin_theta, cos_theta);
+}
+
+/// Azimuth 2 pi u, shared by every sampler of the library.
+template <typename T>
+LTC_HOST_DEVICE inline T azimuth(T u) {
+    return T(2) * pi<T>() * u;
+}
+
+}  // namespace detail
+}  // namespace ltc

@@ -1,0 +1,268 @@
+// ltc/polygon.hpp -- exact integrals over spherical polygons, and horizon clipping.
+//
+// The polygon machinery of the library, usable on its own:
+//   - clip_to_horizon:        Sutherland-Hodgman clipping of an n-gon to the half-space z >= 0;
+//   - edge_integral:          the exact edge term of the paper's eq. (11) (Baum et al. 1989);
+//   - vector_form_factor:     F = 1/(2 pi) sum of edge terms, the "vector irradiance" of the
+//                             unclipped polygon (input of the horizon-clipping approximations);
+//   - form_factor:            the clamped-cosine integral of the clipped polygon, eq. (11),
+//                             signed, one-sided (max(0, sum)) or two-sided (abs(sum));
+//   - solid_angle / clipped_solid_angle: signed solid angles (Van Oosterom & Strackee 1983).
+//
+// Conventions. A polygon is given by n >= 3 vertices (any scale, not necessarily unit) of a
+// simple planar polygon, seen from the shading point at the origin; z is the normal of the
+// shading frame. Signed results are positive when the vertices turn clockwise as seen from the
+// origin, i.e. when dot(p0, (p1 - p0) x (p2 - p0)) > 0: the polygon's right-hand normal points
+// away from the shading point. Non-convex polygons are handled: every result integrates over
+// the winding number of the boundary, which is the polygon's indicator for a simple polygon.
+//
+// Degenerate input never yields NaN or Inf for finite vertices:
+//   - n < 3, or a vertex exactly at the origin (then the polygon's plane contains the shading
+//     point and the polygon is seen edge-on): every integral is 0;
+//   - repeated or collinear vertices: zero-length edges contribute exactly 0;
+//   - an edge whose line passes through the origin has no defined great circle: it contributes 0;
+//   - a polygon entirely below the horizon clips to nothing: clipped integrals are 0.
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/detail/math.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+namespace ltc {
+
+/// How a one-sided or two-sided emitter turns a signed integral into a non-negative one:
+/// one_sided = max(0, signed), two_sided = |signed| (the paper's shader code).
+enum class sidedness { one_sided, two_sided };
+
+template <typename T>
+LTC_HOST_DEVICE inline T apply_sidedness(T signed_value, sidedness s) {
+    return s == sidedness::two_sided ? std::abs(signed_value)
+                                     : (signed_value > T(0) ? signed_value : T(0));
+}
+
+/// Largest vertex count that clipping an n-gon to a half-space can produce: every run of
+/// vertices outside is replaced by two crossing points, and there are at most n/2 such runs.
+LTC_HOST_DEVICE constexpr std::size_t clipped_capacity(std::size_t n) { return n + n / 2; }
+
+namespace detail {
+
+/// Vertex i of a polygon given either as a pointer to glm vectors or as a callable i -> vec3
+/// (the latter lets transformed<> apply M^-1 on the fly, without a vertex buffer).
+template <typename T, typename Vertices>
+LTC_HOST_DEVICE inline glm::vec<3, T> vertex(const Vertices& v, std::size_t i) {
+    if constexpr (std::is_pointer_v<Vertices>)
+        return glm::vec<3, T>(v[i]);
+    else
+        return v(i);
+}
+
+/// The point where the segment from `in` (z >= 0) to `out` (z < 0) meets the plane z = 0, up to
+/// a positive factor: in * (-out.z) + out * in.z needs no division, and z is set to exactly 0.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> horizon_crossing_direction(const glm::vec<3, T>& in,
+                                                                 const glm::vec<3, T>& out) {
+    glm::vec<3, T> x = in * (-out.z) + out * in.z;
+    x.z = T(0);
+    return x;
+}
+
+/// Sutherland-Hodgman against z >= 0, with the crossing point computed by `crossing(in, out)`.
+/// Calls emit(p) for each vertex of the clipped polygon, in order.
+template <typename T, typename VertexAt, typename Crossing, typename Emit>
+LTC_HOST_DEVICE inline void clip_horizon(const VertexAt& at, std::size_t n, const Crossing& crossing,
+                                         Emit&& emit) {
+    const glm::vec<3, T> v0 = at(std::size_t(0));
+    glm::vec<3, T> p = v0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec<3, T> q = (i + 1 < n) ? at(i + 1) : v0;
+        const bool p_in = p.z >= T(0);
+        const bool q_in = q.z >= T(0);
+        if (p_in != q_in) emit(p_in ? crossing(p, q) : crossing(q, p));
+        if (q_in) emit(q);
+        p = q;
+    }
+}
+
+/// Calls edge(a, b, first) for each edge a -> b of the polygon as unit vectors, where `first`
+/// is the polygon's first unit vertex (an apex for fan triangulations). With clip = true the
+/// polygon is first clipped to z >= 0. Returns false when a vertex is at the
+/// origin (the polygon is seen edge-on; the edges seen so far have then been called with a zero
+/// vertex, which every edge term maps to a finite value) or n < 3: callers discard the sum.
+template <typename T, bool clip, typename Vertices, typename EdgeFn>
+LTC_HOST_DEVICE inline bool for_each_unit_edge(const Vertices& vertices, std::size_t n, EdgeFn&& edge) {
+    using vec3 = glm::vec<3, T>;
+    if (n < 3) return false;
+    bool at_origin = false;
+    const auto unit_at = [&](std::size_t i) {
+        const vec3 u = safe_normalize(vertex<T>(vertices, i));
+        at_origin = at_origin || u == vec3(T(0));
+        return u;
+    };
+    vec3 first(T(0)), last(T(0));
+    bool started = false;
+    const auto emit = [&](const vec3& p) {
+        if (started)
+            edge(last, p, first);
+        else
+            first = p, started = true;
+        last = p;
+    };
+    if constexpr (clip) {
+        const auto crossing = [](const vec3& in, const vec3& out) {
+            return safe_normalize(horizon_crossing_direction(in, out));
+        };
+        clip_horizon<T>(unit_at, n, crossing, emit);
+    } else {
+        for (std::size_t i = 0; i < n; ++i) emit(unit_at(i));
+    }
+    if (started) edge(last, first, first);
+    return !at_origin;
+}
+
+/// theta / sin(theta) for theta = atan2(s, c), s = sin(theta) >= 0 computed accurately.
+/// Where s is too small for the quotient to be representable, the edge has (almost) no
+/// length (c > 0: the limit is 1) or passes through the shading point (c < 0: no great circle;
+/// its cross product is ~0 and we return 0 so that the product stays finite).
+template <typename T>
+LTC_HOST_DEVICE inline T theta_over_sin(T s, T c) {
+    if (s > std::numeric_limits<T>::min()) return std::atan2(s, c) / s;
+    return c > T(0) ? T(1) : T(0);
+}
+
+}  // namespace detail
+
+/// Exact edge term of eq. (11) for unit vectors a, b: theta * (a x b) / |a x b|, theta the angle
+/// between them. Computed as atan2(|a x b|, a.b) with a cancellation-free cross product, so it
+/// is accurate for nearly parallel and nearly opposite vertices (no acos of a dot product near
+/// +-1, no division by a vanishing sine).
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> edge_integral(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+    const T c = glm::dot(a, b);
+    const glm::vec<3, T> axb = detail::stable_cross(a, b, c);
+    return axb * detail::theta_over_sin(glm::length(axb), c);
+}
+
+/// z component of edge_integral(a, b): the edge's contribution to the clamped-cosine integral
+/// (times 2 pi).
+template <typename T>
+LTC_HOST_DEVICE inline T edge_integral_z(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+    const T c = glm::dot(a, b);
+    const glm::vec<3, T> axb = detail::stable_cross(a, b, c);
+    return axb.z * detail::theta_over_sin(glm::length(axb), c);
+}
+
+/// Signed solid angle of the spherical triangle (q, a, b) of unit vectors, by Van Oosterom and
+/// Strackee (1983): tan(Omega / 2) = q.(a x b) / (1 + q.a + q.b + a.b). The triple product is
+/// evaluated as (q - a).(a x (b -+ a)), which is exact in exact arithmetic and keeps full
+/// relative accuracy for tiny triangles.
+template <typename T>
+LTC_HOST_DEVICE inline T triangle_solid_angle(const glm::vec<3, T>& q, const glm::vec<3, T>& a,
+                                              const glm::vec<3, T>& b) {
+    const T ab = glm::dot(a, b);
+    const T triple = glm::dot(q - a, detail::stable_cross(a, b, ab));
+    return T(2) * std::atan2(triple, T(1) + glm::dot(q, a) + glm::dot(q, b) + ab);
+}
+
+/// Clips the polygon to the upper half-space z >= 0 (Sutherland-Hodgman). Writes the clipped
+/// polygon to `out`, which must hold clipped_capacity(n) vertices, and returns its vertex
+/// count (0 when nothing is above the horizon or n < 3). Vertices keep their positions; points
+/// on the plane z = 0 count as inside and crossing points have z exactly 0. For a non-convex
+/// polygon the result may contain edges that run back and forth along z = 0: they cancel in
+/// every integral of this library (the winding number is unchanged).
+template <typename T>
+LTC_HOST_DEVICE inline std::size_t clip_to_horizon(const glm::vec<3, T>* in, std::size_t n,
+                                                   glm::vec<3, T>* out) {
+    if (n < 3) return 0;
+    std::size_t m = 0;
+    const auto at = [&](std::size_t i) { return in[i]; };
+    const auto crossing = [](const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+        glm::vec<3, T> x = a + (b - a) * (a.z / (a.z - b.z));  // a.z >= 0 > b.z: no 0/0
+        x.z = T(0);
+        return x;
+    };
+    detail::clip_horizon<T>(at, n, crossing, [&](const glm::vec<3, T>& p) { out[m++] = p; });
+    return m;
+}
+
+/// Vector form factor F = 1/(2 pi) sum_i edge_integral(p_i, p_i+1) of the unclipped polygon
+/// (eq. 11 before the dot with z; Snyder 1996 / Hill 2016). Its z component is the cosine
+/// integral without horizon clipping; |F| and its direction define the equivalent sphere of the
+/// horizon-clipping approximation.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> vector_form_factor(const glm::vec<3, T>* v, std::size_t n) {
+    glm::vec<3, T> f(T(0));
+    const bool ok = detail::for_each_unit_edge<T, false>(
+        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
+            f += edge_integral(a, b);
+        });
+    return ok ? f / (T(2) * pi<T>()) : glm::vec<3, T>(T(0));
+}
+
+namespace detail {
+
+template <typename T, typename Vertices>
+LTC_HOST_DEVICE inline T solid_angle(const Vertices& v, std::size_t n) {
+    T omega(0);
+    // Fan from the first vertex: each triangle is the projection of a planar one, so it lies
+    // in an open hemisphere and Van Oosterom's formula applies.
+    const bool ok = for_each_unit_edge<T, false>(
+        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>& q) {
+            omega += triangle_solid_angle(q, a, b);
+        });
+    return ok ? omega : T(0);
+}
+
+template <typename T, typename Vertices>
+LTC_HOST_DEVICE inline T clipped_solid_angle(const Vertices& v, std::size_t n) {
+    T omega(0);
+    const bool ok = for_each_unit_edge<T, true>(
+        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>& q) {
+            omega += triangle_solid_angle(q, a, b);
+        });
+    return ok ? omega : T(0);
+}
+
+template <typename T, typename Vertices>
+LTC_HOST_DEVICE inline T form_factor(const Vertices& v, std::size_t n) {
+    T sum(0);
+    const bool ok = for_each_unit_edge<T, true>(
+        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
+            sum += edge_integral_z(a, b);
+        });
+    return ok ? sum / (T(2) * pi<T>()) : T(0);
+}
+
+}  // namespace detail
+
+/// Signed solid angle subtended by the polygon (no clipping), in (-2 pi, 2 pi).
+template <typename T>
+LTC_HOST_DEVICE inline T solid_angle(const glm::vec<3, T>* v, std::size_t n) {
+    return detail::solid_angle<T>(v, n);
+}
+
+/// Signed solid angle of the part of the polygon above the horizon z >= 0, in (-2 pi, 2 pi).
+template <typename T>
+LTC_HOST_DEVICE inline T clipped_solid_angle(const glm::vec<3, T>* v, std::size_t n) {
+    return detail::clipped_solid_angle<T>(v, n);
+}
+
+/// Signed integral of cos(theta) / pi over the horizon-clipped polygon: eq. (11) of the paper,
+/// E = 1/(2 pi) sum_i theta_i (p_i x p_j / |p_i x p_j|).z, on the clipped polygon.
+template <typename T>
+LTC_HOST_DEVICE inline T form_factor_signed(const glm::vec<3, T>* v, std::size_t n) {
+    return detail::form_factor<T>(v, n);
+}
+
+/// form_factor_signed made non-negative for a one-sided or two-sided emitter.
+template <typename T>
+LTC_HOST_DEVICE inline T form_factor(const glm::vec<3, T>* v, std::size_t n, sidedness s) {
+    return apply_sidedness(form_factor_signed(v, n), s);
+}
+
+}  // namespace ltc

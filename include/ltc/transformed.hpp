@@ -1,0 +1,208 @@
+// ltc/transformed.hpp -- Linearly Transformed Spherical Distributions (paper section 3,
+// supplement section 2): D(w) = D_o(M^-1 w / |M^-1 w|) |M^-1| / |M^-1 w|^3   (eq. 1).
+//
+//   ltc::transformed<ltc::clamped_cosine<float>> d = ...::from_inverse(m_inv);
+//   float e = d.integrate(vertices, n);   // eq. (3): D_o's closed form over M^-1 P
+//
+// GLM matrices are column-major: the paper's (row-major) M = [a 0 b; 0 c 0; d 0 1] is
+// glm::transpose(glm::mat3(a, 0, b, 0, c, 0, d, 0, 1)), i.e. glm::mat3 M; M[col][row].
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/detail/math.hpp>
+#include <ltc/polygon.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace ltc {
+
+/// Thrown by the checked factories of transformed<> for a singular or non-finite matrix.
+class invalid_transform : public std::invalid_argument {
+  public:
+    using std::invalid_argument::invalid_argument;
+};
+
+namespace detail {
+
+/// a x b with each component by difference_of_products (one rounding error each).
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> accurate_cross(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+    return glm::vec<3, T>(difference_of_products(a.y, b.z, a.z, b.y),
+                          difference_of_products(a.z, b.x, a.x, b.z),
+                          difference_of_products(a.x, b.y, a.y, b.x));
+}
+
+/// Inverse and determinant of a 3x3 matrix through the cross products of its columns:
+/// det = c0 . (c1 x c2) and the rows of the inverse are (c1 x c2, c2 x c0, c0 x c1) / det.
+template <typename T>
+struct inverse_result {
+    glm::mat<3, 3, T> inverse;
+    T determinant;
+};
+
+template <typename T>
+LTC_HOST_DEVICE inline inverse_result<T> accurate_inverse(const glm::mat<3, 3, T>& m) {
+    const glm::vec<3, T> r0 = accurate_cross(m[1], m[2]);
+    const glm::vec<3, T> r1 = accurate_cross(m[2], m[0]);
+    const glm::vec<3, T> r2 = accurate_cross(m[0], m[1]);
+    const T det = glm::dot(m[0], r0);
+    return {glm::transpose(glm::mat<3, 3, T>(r0, r1, r2)) / det, det};
+}
+
+/// The vertices M^-1 p_i of the transformed polygon, computed on the fly. Each p_i is first
+/// divided by its largest component (the integrals only see directions) so that M^-1 p cannot
+/// overflow for huge finite vertices.
+template <typename T>
+struct transformed_vertices {
+    const glm::mat<3, 3, T>& m_inv;
+    const glm::vec<3, T>* v;
+    LTC_HOST_DEVICE glm::vec<3, T> operator()(std::size_t i) const {
+        const glm::vec<3, T> p = v[i];
+        const T s = glm::max(glm::max(std::abs(p.x), std::abs(p.y)), std::abs(p.z));
+        return s > T(0) ? m_inv * (p / s) : glm::vec<3, T>(T(0));
+    }
+};
+
+}  // namespace detail
+
+/// The linearly transformed distribution D of eq. (1) with original distribution Dist (one of
+/// uniform_sphere, uniform_hemisphere, clamped_cosine, squared_clamped_cosine, or any type with
+/// the same static members).
+template <typename Dist>
+class transformed {
+  public:
+    using distribution = Dist;
+    using scalar = typename Dist::scalar;
+    using T = scalar;
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+    using mat3 = glm::mat<3, 3, T>;
+
+    /// D from M. Precondition: M is finite and invertible (not checked, so that this stays cheap
+    /// in inner loops; use checked() for untrusted input). The distribution is invariant to the
+    /// scale of M, so any non-zero multiple of M gives the same D.
+    LTC_HOST_DEVICE explicit transformed(const mat3& M) {
+        const auto inv = detail::accurate_inverse(M);
+        set(M, inv.inverse, T(1) / inv.determinant);
+    }
+
+    /// D from M^-1 directly, as renderers store it. Same precondition as the constructor.
+    LTC_HOST_DEVICE static transformed from_inverse(const mat3& m_inv) {
+        const auto inv = detail::accurate_inverse(m_inv);
+        return transformed(inv.inverse, m_inv, inv.determinant);
+    }
+
+    /// Like the constructor, but throws ltc::invalid_transform when M has a non-finite entry or
+    /// is numerically singular: |det M| <= epsilon * |c0| |c1| |c2| (c_i its columns; the ratio
+    /// is 1 for orthogonal matrices, 0 for singular ones, and invariant to scale). M is first
+    /// divided by its largest entry (D does not change) so that no determinant under- or
+    /// overflows; matrix() returns that rescaled M.
+    static transformed checked(const mat3& M) {
+        const mat3 m = rescaled(M, "M");
+        const auto inv = detail::accurate_inverse(m);
+        require_invertible(m, inv, "M");
+        return transformed(m, inv.inverse, T(1) / inv.determinant);
+    }
+
+    /// Like from_inverse(), with the checks of checked() applied to M^-1.
+    static transformed checked_from_inverse(const mat3& m_inv) {
+        const mat3 mi = rescaled(m_inv, "M^-1");
+        const auto inv = detail::accurate_inverse(mi);
+        require_invertible(mi, inv, "M^-1");
+        return transformed(inv.inverse, mi, inv.determinant);
+    }
+
+    /// D(w) of eq. (1) at the unit direction w (0 for w = 0).
+    LTC_HOST_DEVICE T eval(const vec3& w) const {
+        const vec3 wo = m_inv_ * w;
+        const T l = glm::length(wo);
+        if (!(l > T(0))) return T(0);
+        return Dist::eval(wo / l) * (abs_det_inv_ / (l * l * l));
+    }
+
+    /// Jacobian d w_o / d w = |M^-1| / |M^-1 w|^3 of the map w -> w_o = M^-1 w / |M^-1 w|
+    /// (eq. 1; derived in appendix A of the paper), at the unit direction w.
+    LTC_HOST_DEVICE T jacobian(const vec3& w) const {
+        const T l = glm::length(m_inv_ * w);
+        return l > T(0) ? abs_det_inv_ / (l * l * l) : T(0);
+    }
+
+    /// D is normalized (supplement 2.2), so it is its own pdf.
+    LTC_HOST_DEVICE T pdf(const vec3& w) const { return eval(w); }
+
+    /// Algorithm 1: w_o ~ D_o, then w = M w_o / |M w_o| has pdf D(w).
+    LTC_HOST_DEVICE vec3 sample(const vec2& u) const { return detail::safe_normalize(m_ * Dist::sample(u)); }
+
+    /// Signed integral of D over the polygon: eq. (3), D_o's closed form over M^-1 P, times the
+    /// sign of |M^-1| so that the sign refers to P's own orientation (see polygon.hpp).
+    LTC_HOST_DEVICE T integrate_signed(const vec3* vertices, std::size_t n) const {
+        const T s = Dist::signed_integral(detail::transformed_vertices<T>{m_inv_, vertices}, n);
+        return det_inv_ < T(0) ? -s : s;
+    }
+
+    /// Integral of D over the spherical polygon subtended by vertices[0..n), whatever the winding.
+    LTC_HOST_DEVICE T integrate(const vec3* vertices, std::size_t n) const {
+        return std::abs(integrate_signed(vertices, n));
+    }
+
+    /// Integral seen by a one-sided (max(0, signed)) or two-sided (|signed|) emitter.
+    LTC_HOST_DEVICE T integrate(const vec3* vertices, std::size_t n, sidedness s) const {
+        return apply_sidedness(integrate_signed(vertices, n), s);
+    }
+
+    LTC_HOST_DEVICE const mat3& matrix() const { return m_; }
+    LTC_HOST_DEVICE const mat3& inverse_matrix() const { return m_inv_; }
+    /// |M^-1|, the determinant of the inverse matrix.
+    LTC_HOST_DEVICE T inverse_determinant() const { return det_inv_; }
+
+  private:
+    LTC_HOST_DEVICE transformed(const mat3& M, const mat3& m_inv, T det_inv) { set(M, m_inv, det_inv); }
+
+    LTC_HOST_DEVICE void set(const mat3& M, const mat3& m_inv, T det_inv) {
+        m_ = M;
+        m_inv_ = m_inv;
+        det_inv_ = det_inv;
+        abs_det_inv_ = std::abs(det_inv);
+    }
+
+    static mat3 rescaled(const mat3& m, const char* name) {
+        T largest(0);
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) {
+                if (!std::isfinite(m[c][r]))
+                    throw invalid_transform(std::string("ltc::transformed: ") + name +
+                                            " has a non-finite entry");
+                largest = glm::max(largest, std::abs(m[c][r]));
+            }
+        if (!(largest > T(0))) throw invalid_transform(std::string("ltc::transformed: ") + name + " is zero");
+        return m / largest;
+    }
+
+    static void require_invertible(const mat3& m, const detail::inverse_result<T>& inv, const char* name) {
+        const T hadamard = glm::length(m[0]) * glm::length(m[1]) * glm::length(m[2]);
+        const T ratio = std::abs(inv.determinant) / hadamard;
+        bool finite = std::isfinite(inv.determinant);
+        for (int c = 0; c < 3; ++c) finite = finite && detail::is_finite(inv.inverse[c]);
+        if (!(ratio > std::numeric_limits<T>::epsilon()) || !finite) {
+            std::ostringstream msg;
+            msg << "ltc::transformed: " << name << " is singular or numerically singular (|det| / "
+                << "product of column norms = " << ratio << ", must exceed epsilon = "
+                << std::numeric_limits<T>::epsilon() << ")";
+            throw invalid_transform(msg.str());
+        }
+    }
+
+    mat3 m_{T(1)};
+    mat3 m_inv_{T(1)};
+    T det_inv_{1};
+    T abs_det_inv_{1};
+};
+
+}  // namespace ltc
