@@ -218,12 +218,23 @@ LTC_HOST_DEVICE inline T solid_angle(const Vertices& v, std::size_t n) {
     return ok ? omega : T(0);
 }
 
+/// Signed solid angle of the triangle (z, a, b) for unit a, b with a.z, b.z >= 0: Van Oosterom
+/// and Strackee with the pole as apex. Every clipped polygon lies in the upper hemisphere, so a
+/// fan from the pole is valid and turns the solid angle into a sum of edge terms, as stable as
+/// eq. (11) itself, even for polygons close to or in the horizon plane where a fan from one of
+/// their own vertices would be made of nearly flat, nearly hemispherical triangles.
+template <typename T>
+LTC_HOST_DEVICE inline T pole_triangle_solid_angle(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+    const T ab = glm::dot(a, b);
+    return T(2) * std::atan2(stable_cross(a, b, ab).z, T(1) + a.z + b.z + ab);
+}
+
 template <typename T, typename Vertices>
 LTC_HOST_DEVICE inline T clipped_solid_angle(const Vertices& v, std::size_t n) {
     T omega(0);
     const bool ok = for_each_unit_edge<T, true>(
-        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>& q) {
-            omega += triangle_solid_angle(q, a, b);
+        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
+            omega += pole_triangle_solid_angle(a, b);
         });
     return ok ? omega : T(0);
 }

@@ -56,13 +56,13 @@ struct squared_clamped_cosine {
     }
 
     /// Signed integral: 3 / (2 pi) tau^2 = (Omega + sum of second_moment_edge) / (2 pi), over
-    /// the horizon-clipped polygon; Omega by a fan from the clipped polygon's first vertex.
+    /// the horizon-clipped polygon; Omega by a fan from the pole (see clipped_solid_angle).
     template <typename Vertices>
     LTC_HOST_DEVICE static T signed_integral(const Vertices& v, std::size_t n) {
         T sum(0);
         const bool ok = detail::for_each_unit_edge<T, true>(
-            v, n, [&](const vec3& a, const vec3& b, const vec3& q) {
-                sum += triangle_solid_angle(q, a, b) + detail::second_moment_edge(a, b);
+            v, n, [&](const vec3& a, const vec3& b, const vec3&) {
+                sum += detail::pole_triangle_solid_angle(a, b) + detail::second_moment_edge(a, b);
             });
         return ok ? sum / (T(2) * pi<T>()) : T(0);
     }

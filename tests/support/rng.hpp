@@ -1,0 +1,50 @@
+// Deterministic random numbers for tests: SplitMix64 (Steele, Lea, Flood 2014), with doubles in
+// [0, 1) from the top 53 bits. Unlike std::uniform_real_distribution, the sequence is the same
+// on every standard library, so a fixed seed gives the same test on every machine.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace ltc_test {
+
+class rng {
+  public:
+    explicit rng(std::uint64_t seed) : state_(seed) {}
+
+    std::uint64_t next_u64() {
+        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    /// Uniform in [0, 1).
+    double uniform() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53; }
+    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+    /// Uniform in [0, 1)^2, in the scalar type of the sampler under test (a float made from a
+    /// double in [0, 1) can round up to 1: clamp to the largest float below 1).
+    template <typename T>
+    glm::vec<2, T> uniform2() {
+        return glm::vec<2, T>(below_one<T>(uniform()), below_one<T>(uniform()));
+    }
+    /// Uniform direction on the unit sphere.
+    glm::dvec3 direction() {
+        const double z = 1 - 2 * uniform(), phi = 2 * 3.141592653589793 * uniform();
+        const double r = std::sqrt(std::max(0.0, 1 - z * z));
+        return {r * std::cos(phi), r * std::sin(phi), z};
+    }
+
+  private:
+    template <typename T>
+    static T below_one(double u) {
+        const T t = static_cast<T>(u);
+        return t < T(1) ? t : T(1) - std::numeric_limits<T>::epsilon() / 2;
+    }
+    std::uint64_t state_;
+};
+
+}  // namespace ltc_test
