@@ -8,8 +8,9 @@
 //    dx^2 * A. The grid includes both end points, so the weights sum to A (1 + dx)^2, not A.
 //    `res` is used uninitialized in the listing; we start it at 0.
 //  - test_sampling's reference moments: theta = 0:0.01:pi (315 values, last 3.14) and
-//    phi = 0:0.01:2*pi (629 values, last 6.28), weight dangle^2 sin(theta) D(w). The phi grid
-//    covers 6.29 rad instead of 2 pi (0.1% too much); the theta grid stops 0.0016 rad short.
+//    phi = 0:0.01:2*pi (629 values, last 6.28), weight dangle^2 sin(theta) D(w). Neither grid
+//    closes: the phi cells cover 6.29 rad, so the directions near phi = 0 are counted twice
+//    over 0.0068 rad, and the theta grid stops 0.0016 rad short of pi.
 //  - Section 2.2 prints w = (sin t cos p, cos t cos p, cos t), which is not a unit vector
 //    (a typo); the code of test_sampling uses (cos p sin t, sin p sin t, cos t), as we do.
 #pragma once
@@ -104,6 +105,27 @@ inline riemann_moments test_sampling_reference(const glm::dmat3& M, Do_function 
             const glm::dvec3 w(std::cos(phi) * std::sin(theta), std::sin(phi) * std::sin(theta),
                                std::cos(theta));
             const double weight = dangle * dangle * std::sin(theta) * D(w, M, Do);
+            r.norm += weight;
+            r.first += weight * w;
+        }
+    }
+    return r;
+}
+
+/// The same rule on a grid that closes: dtheta = pi / n and dphi = pi / n, theta = 0..pi
+/// (n + 1 points; sin(theta) vanishes at both ends, so this is the trapezoidal rule) and phi over
+/// exactly one period (2 n points, the periodic trapezoidal rule). Not in the supplement: used
+/// to show that its grid, which does not close, explains its printed digits.
+inline riemann_moments closed_grid_moments(const glm::dmat3& M, Do_function Do, int n) {
+    const double pi = 3.141592653589793, h = pi / n;
+    riemann_moments r{0, glm::dvec3(0)};
+    for (int i = 0; i <= n; ++i) {
+        const double theta = i * h;
+        for (int j = 0; j < 2 * n; ++j) {
+            const double phi = j * h;
+            const glm::dvec3 w(std::cos(phi) * std::sin(theta), std::sin(phi) * std::sin(theta),
+                               std::cos(theta));
+            const double weight = h * h * std::sin(theta) * D(w, M, Do);
             r.norm += weight;
             r.first += weight * w;
         }
