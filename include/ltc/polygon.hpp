@@ -77,10 +77,10 @@ LTC_HOST_DEVICE inline glm::vec<3, T> horizon_crossing_direction(const glm::vec<
 template <typename T, typename VertexAt, typename Crossing, typename Emit>
 LTC_HOST_DEVICE inline void clip_horizon(const VertexAt& at, std::size_t n, const Crossing& crossing,
                                          Emit&& emit) {
-    const glm::vec<3, T> v0 = at(std::size_t(0));
-    glm::vec<3, T> p = v0;
+    // Start with the closing edge (n-1 -> 0) so that an unclipped polygon comes out unchanged.
+    glm::vec<3, T> p = at(n - 1);
     for (std::size_t i = 0; i < n; ++i) {
-        const glm::vec<3, T> q = (i + 1 < n) ? at(i + 1) : v0;
+        const glm::vec<3, T> q = at(i);
         const bool p_in = p.z >= T(0);
         const bool q_in = q.z >= T(0);
         if (p_in != q_in) emit(p_in ? crossing(p, q) : crossing(q, p));
@@ -171,7 +171,8 @@ LTC_HOST_DEVICE inline T triangle_solid_angle(const glm::vec<3, T>& q, const glm
 
 /// Clips the polygon to the upper half-space z >= 0 (Sutherland-Hodgman). Writes the clipped
 /// polygon to `out`, which must hold clipped_capacity(n) vertices, and returns its vertex
-/// count (0 when nothing is above the horizon or n < 3). Vertices keep their positions; points
+/// count (0 when nothing is above the horizon or n < 3). Vertices keep their positions and their
+/// order (a polygon entirely above the horizon is copied unchanged); points
 /// on the plane z = 0 count as inside and crossing points have z exactly 0. For a non-convex
 /// polygon the result may contain edges that run back and forth along z = 0: they cancel in
 /// every integral of this library (the winding number is unchanged).
