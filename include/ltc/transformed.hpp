@@ -138,7 +138,19 @@ class transformed {
     LTC_HOST_DEVICE T pdf(const vec3& w) const { return eval(w); }
 
     /// Algorithm 1: w_o ~ D_o, then w = M w_o / |M w_o| has pdf D(w).
-    LTC_HOST_DEVICE vec3 sample(const vec2& u) const { return detail::safe_normalize(m_ * Dist::sample(u)); }
+    /// Guarantee: pdf(sample(u)) > 0 for every u in [0, 1)^2. A w_o within ~cond(M) epsilon of
+    /// D_o's horizon (u.x -> 1 for the uniform hemisphere) can be carried across it by the
+    /// rounding of M w_o and M^-1 w, where pdf() is 0; such a sample is lifted off the horizon
+    /// by the smallest power-of-16 multiple of epsilon that brings it back (a bias confined to a
+    /// set of measure ~cond(M) epsilon, next to a boundary where the density is finite).
+    LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
+        const vec3 wo = Dist::sample(u);
+        vec3 w = detail::safe_normalize(m_ * wo);
+        T lift = std::numeric_limits<T>::epsilon();
+        for (int i = 0; i < 16 && !(Dist::eval(detail::safe_normalize(m_inv_ * w)) > T(0)); ++i, lift *= T(16))
+            w = detail::safe_normalize(m_ * detail::safe_normalize(wo + vec3(T(0), T(0), lift)));
+        return w;
+    }
 
     /// Signed integral of D over the polygon: eq. (3), D_o's closed form over M^-1 P, times the
     /// sign of |M^-1| so that the sign refers to P's own orientation (see polygon.hpp).
