@@ -131,7 +131,7 @@ LTC_HOST_DEVICE inline bool for_each_unit_edge(const Vertices& vertices, std::si
 /// its cross product is ~0 and we return 0 so that the product stays finite).
 template <typename T>
 LTC_HOST_DEVICE inline T theta_over_sin(T s, T c) {
-    if (s > std::numeric_limits<T>::min()) return std::atan2(s, c) / s;
+    if (s > min_normal<T>()) return std::atan2(s, c) / s;
     return c > T(0) ? T(1) : T(0);
 }
 

@@ -30,7 +30,7 @@ LTC_HOST_DEVICE inline T second_moment_edge(const glm::vec<3, T>& a, const glm::
     const glm::vec<3, T> sum = a + b;
     const T l = glm::length(sum);
     // s ~ 0: zero-length edge (term -> 0); l ~ 0: edge through the origin (no great circle).
-    if (!(s > std::numeric_limits<T>::min()) || !(l > std::numeric_limits<T>::min())) return T(0);
+    if (!(s > min_normal<T>()) || !(l > min_normal<T>())) return T(0);
     return (axb.z / s) * glm::length(b - a) * (sum.z / l);
 }
 

@@ -146,7 +146,7 @@ class transformed {
     LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
         const vec3 wo = Dist::sample(u);
         vec3 w = detail::safe_normalize(m_ * wo);
-        T lift = std::numeric_limits<T>::epsilon();
+        T lift = detail::epsilon<T>();
         for (int i = 0; i < 16 && !(Dist::eval(detail::safe_normalize(m_inv_ * w)) > T(0)); ++i, lift *= T(16))
             w = detail::safe_normalize(m_ * detail::safe_normalize(wo + vec3(T(0), T(0), lift)));
         return w;

@@ -8,8 +8,10 @@
 
 #include <glm/glm.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace ltc {
 
@@ -20,6 +22,21 @@ LTC_HOST_DEVICE constexpr T pi() {
 }
 
 namespace detail {
+
+/// Smallest positive normal number and machine epsilon of T, usable in CUDA device code
+/// (std::numeric_limits members are host-only constexpr functions there).
+template <typename T>
+LTC_HOST_DEVICE constexpr T min_normal() {
+    if constexpr (std::is_same_v<T, float>) return FLT_MIN;
+    else if constexpr (std::is_same_v<T, double>) return DBL_MIN;
+    else return std::numeric_limits<T>::min();
+}
+template <typename T>
+LTC_HOST_DEVICE constexpr T epsilon() {
+    if constexpr (std::is_same_v<T, float>) return FLT_EPSILON;
+    else if constexpr (std::is_same_v<T, double>) return DBL_EPSILON;
+    else return std::numeric_limits<T>::epsilon();
+}
 
 template <typename T>
 LTC_HOST_DEVICE inline T safe_sqrt(T x) {
