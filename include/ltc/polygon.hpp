@@ -183,7 +183,14 @@ LTC_HOST_DEVICE inline std::size_t clip_to_horizon(const glm::vec<3, T>* in, std
     std::size_t m = 0;
     const auto at = [&](std::size_t i) { return in[i]; };
     const auto crossing = [](const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
-        glm::vec<3, T> x = a + (b - a) * (a.z / (a.z - b.z));  // a.z >= 0 > b.z: no 0/0
+        // a.z >= 0 > b.z. Dividing both heights by the larger one keeps a.z - b.z in [1, 2]
+        // (no overflow for huge, no 0/0 for subnormal heights); the convex combination
+        // a (1 - t) + b t does not overflow where b - a would.
+        const T s = glm::max(a.z, -b.z);
+        const T t = (a.z / s) / (a.z / s - b.z / s);
+        // Clamping to the segment's bounding box keeps the rounding of a (1 - t) + b t from
+        // stepping past FLT_MAX when a and b are both near it.
+        glm::vec<3, T> x = glm::clamp(a * (T(1) - t) + b * t, glm::min(a, b), glm::max(a, b));
         x.z = T(0);
         return x;
     };

@@ -100,8 +100,11 @@ class transformed {
     }
 
     /// Like the constructor, but throws ltc::invalid_transform when M has a non-finite entry or
-    /// is numerically singular: |det M| <= epsilon * |c0| |c1| |c2| (c_i its columns; the ratio
-    /// is 1 for orthogonal matrices, 0 for singular ones, and invariant to scale). M is first
+    /// is numerically singular: |det M| <= sqrt(epsilon) |c0| |c1| |c2| (c_i its columns; the
+    /// ratio is 1 for orthogonal and for diagonal matrices, however anisotropic, 0 for singular
+    /// ones, and invariant to scale). Below sqrt(epsilon), M^-1 and the round trip
+    /// M^-1 (M w) keep fewer than half of T's digits, and sample() could no longer promise
+    /// pdf > 0 (the fuzzer found such matrices near epsilon). M is first
     /// divided by its largest entry (D does not change) so that no determinant under- or
     /// overflows; matrix() returns that rescaled M.
     static transformed checked(const mat3& M) {
@@ -202,11 +205,11 @@ class transformed {
         const T ratio = std::abs(inv.determinant) / hadamard;
         bool finite = std::isfinite(inv.determinant);
         for (int c = 0; c < 3; ++c) finite = finite && detail::is_finite(inv.inverse[c]);
-        if (!(ratio > std::numeric_limits<T>::epsilon()) || !finite) {
+        const T threshold = std::sqrt(std::numeric_limits<T>::epsilon());
+        if (!(ratio > threshold) || !finite) {
             std::ostringstream msg;
             msg << "ltc::transformed: " << name << " is singular or numerically singular (|det| / "
-                << "product of column norms = " << ratio << ", must exceed epsilon = "
-                << std::numeric_limits<T>::epsilon() << ")";
+                << "product of column norms = " << ratio << ", must exceed sqrt(epsilon) = " << threshold << ")";
             throw invalid_transform(msg.str());
         }
     }
