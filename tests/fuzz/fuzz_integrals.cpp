@@ -1,0 +1,100 @@
+// libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
+// and any matrix accepted by the checked factory, every integral, density and sample of the
+// library is finite. Build: clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined
+// -I include tests/fuzz/fuzz_integrals.cpp; run on tests/fuzz/corpus (see .ci/run).
+#include <ltc/ltc.hpp>
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+namespace {
+
+template <typename T>
+void require_finite(T x, const char* what) {
+    if (!std::isfinite(x)) {
+        std::fprintf(stderr, "non-finite %s: %g\n", what, static_cast<double>(x));
+        std::abort();
+    }
+}
+
+template <typename T>
+void require_finite(const glm::vec<3, T>& v, const char* what) {
+    require_finite(v.x, what);  // component by component: a sum of huge finite values overflows
+    require_finite(v.y, what);
+    require_finite(v.z, what);
+}
+
+template <typename T>
+T finite_value(FuzzedDataProvider& in) {
+    // Mix ordinary values with extreme magnitudes (huge, tiny, subnormal) and exact zeros.
+    T x = in.ConsumeFloatingPoint<T>();
+    return std::isfinite(x) ? x : T(0);
+}
+
+template <typename T, typename Dist>
+void check_distribution(const glm::vec<3, T>* v, std::size_t n, const glm::mat<3, 3, T>& m, bool use_inverse,
+                        const glm::vec<2, T>& u) {
+    require_finite(Dist::integrate(v, n), "D_o integral");
+    try {
+        const auto d = use_inverse ? ltc::transformed<Dist>::checked_from_inverse(m) : ltc::transformed<Dist>::checked(m);
+        require_finite(d.integrate(v, n), "integral");
+        require_finite(d.integrate(v, n, ltc::sidedness::one_sided), "one-sided integral");
+        const glm::vec<3, T> w = d.sample(u);
+        require_finite(w, "sample");
+        const T p = d.pdf(w);
+        require_finite(p, "pdf");
+        if (!(p > T(0))) {
+            std::fprintf(stderr, "sample with zero pdf\n");
+            std::abort();
+        }
+        for (std::size_t i = 0; i < n; ++i) require_finite(d.eval(ltc::detail::safe_normalize(v[i])), "eval");
+    } catch (const ltc::invalid_transform&) {
+        // rejected matrices are the checked factory's job
+    }
+}
+
+template <typename T>
+void run(FuzzedDataProvider& in) {
+    using vec3 = glm::vec<3, T>;
+    glm::mat<3, 3, T> m;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) m[c][r] = finite_value<T>(in);
+    const bool use_inverse = in.ConsumeBool();
+    const T u0 = in.ConsumeProbability<T>(), u1 = in.ConsumeProbability<T>();
+    const glm::vec<2, T> u(u0 < T(1) ? u0 : T(0), u1 < T(1) ? u1 : T(0));
+    const std::size_t n = in.ConsumeIntegralInRange<std::size_t>(0, 15);
+    std::vector<vec3> v(n);
+    for (auto& p : v) p = vec3(finite_value<T>(in), finite_value<T>(in), finite_value<T>(in));
+    const vec3* pv = v.data();
+
+    require_finite(ltc::solid_angle(pv, n), "solid angle");
+    require_finite(ltc::clipped_solid_angle(pv, n), "clipped solid angle");
+    require_finite(ltc::form_factor_signed(pv, n), "form factor");
+    const vec3 f = ltc::vector_form_factor(pv, n);
+    require_finite(f, "vector form factor");
+    std::vector<vec3> clipped(ltc::clipped_capacity(n));
+    const std::size_t k = ltc::clip_to_horizon(pv, n, clipped.data());
+    if (k > ltc::clipped_capacity(n)) std::abort();
+    for (std::size_t i = 0; i < k; ++i) require_finite(clipped[i], "clipped vertex");
+
+    check_distribution<T, ltc::uniform_sphere<T>>(pv, n, m, use_inverse, u);
+    check_distribution<T, ltc::uniform_hemisphere<T>>(pv, n, m, use_inverse, u);
+    check_distribution<T, ltc::clamped_cosine<T>>(pv, n, m, use_inverse, u);
+    check_distribution<T, ltc::squared_clamped_cosine<T>>(pv, n, m, use_inverse, u);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    FuzzedDataProvider in(data, size);
+    if (in.ConsumeBool())
+        run<float>(in);
+    else
+        run<double>(in);
+    return 0;
+}
