@@ -25,23 +25,23 @@ struct distribution_row {
     glm::dvec3 (*sample)(const glm::dmat3& M, const glm::dvec2& u);
 };
 
-template <template <typename> class Dist>
+template <typename Dist>
 double closed_form(const glm::dmat3& M, const glm::dvec3* v, std::size_t n) {
-    return ltc::transformed<Dist<double>>(M).integrate(v, n);
+    return ltc::transformed<Dist>(M).integrate(v, n);
 }
 
-template <template <typename> class Dist>
+template <typename Dist>
 glm::dvec3 sample(const glm::dmat3& M, const glm::dvec2& u) {
-    return ltc::transformed<Dist<double>>(M).sample(u);
+    return ltc::transformed<Dist>(M).sample(u);
 }
 
 const distribution_row rows[4] = {
-    {"uniform_sphere", Do_uniform_sphere, true, closed_form<ltc::uniform_sphere>, sample<ltc::uniform_sphere>},
-    {"uniform_hemisphere", Do_uniform_hemisphere, false, closed_form<ltc::uniform_hemisphere>,
-     sample<ltc::uniform_hemisphere>},
-    {"clamped_cosine", Do_clamped_cosine, false, closed_form<ltc::clamped_cosine>, sample<ltc::clamped_cosine>},
-    {"squared_clamped_cosine", Do_squared_clamped_cosine, false, closed_form<ltc::squared_clamped_cosine>,
-     sample<ltc::squared_clamped_cosine>},
+    {"uniform_sphere", Do_uniform_sphere, true, closed_form<ltc::uniform_sphere<double>>, sample<ltc::uniform_sphere<double>>},
+    {"uniform_hemisphere", Do_uniform_hemisphere, false, closed_form<ltc::uniform_hemisphere<double>>,
+     sample<ltc::uniform_hemisphere<double>>},
+    {"clamped_cosine", Do_clamped_cosine, false, closed_form<ltc::clamped_cosine<double>>, sample<ltc::clamped_cosine<double>>},
+    {"squared_clamped_cosine", Do_squared_clamped_cosine, false, closed_form<ltc::squared_clamped_cosine<double>>,
+     sample<ltc::squared_clamped_cosine<double>>},
 };
 
 // The six faces of the cube [-1, 1]^3, each wound the same way as seen from the centre: their
@@ -108,7 +108,7 @@ int main() {
     for (std::size_t n : {std::size_t(10000), std::size_t(1000000)}) {
         ltc_test::rng rng(2016);
         glm::dvec3 mean(0);
-        for (std::size_t i = 0; i < n; ++i) mean += sample<ltc::squared_clamped_cosine>(M, rng.uniform2<double>());
+        for (std::size_t i = 0; i < n; ++i) mean += sample<ltc::squared_clamped_cosine<double>>(M, rng.uniform2<double>());
         mean /= double(n);
         char label[64];
         std::snprintf(label, sizeof label, "ltc sampling, N = %zu", n);

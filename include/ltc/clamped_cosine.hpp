@@ -12,7 +12,8 @@
 
 namespace ltc {
 
-template <typename T>
+/// EdgePolicy selects how integrate() evaluates the edge terms (polygon.hpp, edge_policy).
+template <typename T, typename EdgePolicy = edge_policy::exact>
 struct clamped_cosine {
     using scalar = T;
     using vec2 = glm::vec<2, T>;
@@ -32,7 +33,7 @@ struct clamped_cosine {
     /// Signed integral: eq. (11) over the horizon-clipped polygon (ltc::form_factor_signed).
     template <typename Vertices>
     LTC_HOST_DEVICE static T signed_integral(const Vertices& v, std::size_t n) {
-        return detail::form_factor<T>(v, n);
+        return detail::form_factor<T, EdgePolicy>(v, n);
     }
 
     LTC_HOST_DEVICE static T integrate(const vec3* v, std::size_t n) {
