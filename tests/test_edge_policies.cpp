@@ -25,7 +25,7 @@ error_at scan(long double lo, int steps = 400000) {
         const long double cl = static_cast<long double>(c);
         const long double sl = std::sqrt((1 - cl) * (1 + cl));
         const long double ref = sl > 0 ? std::atan2(sl, cl) / sl : 1.0L;
-        const T v = Policy::template theta_over_sin<T>(c, static_cast<T>(sl));
+        const T v = Policy::template theta_over_sin<T>(c, glm::vec<3, T>(static_cast<T>(sl), T(0), T(0)));
         const double rel = static_cast<double>(std::fabs(static_cast<long double>(v) / ref - 1));
         if (!(rel <= e.max_rel)) e = {rel, static_cast<double>(cl)};
     }

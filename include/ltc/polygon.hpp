@@ -53,12 +53,13 @@ LTC_HOST_DEVICE constexpr std::size_t clipped_capacity(std::size_t n) { return n
 
 namespace detail {
 
-/// Vertex i of a polygon given either as a pointer to glm vectors or as a callable i -> vec3
-/// (the latter lets transformed<> apply M^-1 on the fly, without a vertex buffer).
+/// Vertex i of a polygon as a unit vector (0 for a vertex at the origin), from either a pointer
+/// to glm vectors or a callable i -> unit vec3 (the latter lets transformed<> apply M^-1 on the
+/// fly, without a vertex buffer).
 template <typename T, typename Vertices>
-LTC_HOST_DEVICE inline glm::vec<3, T> vertex(const Vertices& v, std::size_t i) {
+LTC_HOST_DEVICE inline glm::vec<3, T> unit_vertex(const Vertices& v, std::size_t i) {
     if constexpr (std::is_pointer_v<Vertices>)
-        return glm::vec<3, T>(v[i]);
+        return safe_normalize(glm::vec<3, T>(v[i]));
     else
         return v(i);
 }
@@ -101,7 +102,7 @@ LTC_HOST_DEVICE inline bool for_each_unit_edge(const Vertices& vertices, std::si
     if (n < 3) return false;
     bool at_origin = false;
     const auto unit_at = [&](std::size_t i) {
-        const vec3 u = safe_normalize(vertex<T>(vertices, i));
+        const vec3 u = unit_vertex<T>(vertices, i);
         at_origin = at_origin || u == vec3(T(0));
         return u;
     };
@@ -139,7 +140,8 @@ LTC_HOST_DEVICE inline T theta_over_sin(T s, T c) {
 }  // namespace detail
 
 /// How the factor theta / sin(theta) of the edge term is evaluated, from c = cos(theta) and
-/// s = sin(theta) (both accurate: s comes from a cancellation-free cross product). Selected at
+/// the cross product a x b of the edge's unit vertices (|a x b| = sin(theta), accurate: it comes
+/// from a cancellation-free cross product; a policy takes its length only where it needs it). Selected at
 /// compile time; every integral of the library defaults to `exact`. Measured maximum relative
 /// errors of the factor over c in [-1, 1] are in the README and tests/test_edge_policies.cpp.
 namespace edge_policy {
@@ -147,7 +149,9 @@ namespace edge_policy {
 /// atan2(s, c) / s: correct to a few ulps at every angle.
 struct exact {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, T s) { return detail::theta_over_sin(s, c); }
+    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
+        return detail::theta_over_sin(glm::length(axb), c);
+    }
 };
 
 /// Degree-9 polynomial in y = 1 - c, interpolating f(c) = acos(c) / sqrt(1 - c^2) at the
@@ -155,7 +159,7 @@ struct exact {
 /// float rounding), extended to c < 0 by the symmetry f(c) = pi / s - f(-c).
 struct polynomial {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, T s) {
+    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
         const T y = T(1) - glm::abs(c);
         T p = T(0.0111628242);
         p = p * y + T(-0.0325916887);
@@ -168,6 +172,7 @@ struct polynomial {
         p = p * y + T(0.333335381);
         p = p * y + T(0.99999999);
         if (c >= T(0)) return p;
+        const T s = glm::length(axb);
         return s > detail::min_normal<T>() ? pi<T>() / s - p : T(0);  // s = 0, c < 0: see exact
     }
 };
@@ -177,7 +182,7 @@ struct polynomial {
 /// 1 / sqrt(max(1 - c^2, 1e-7)) as the shader does.
 struct rational {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, T) {
+    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>&) {
         const T y = glm::abs(c);
         const T a = T(0.8543985) + (T(0.4965155) + T(0.0145206) * y) * y;
         const T b = T(3.4175940) + (T(4.1616724) + y) * y;
@@ -193,7 +198,7 @@ struct rational {
 /// Instantiable with T = _Float16 (real half-precision arithmetic; sqrt through float).
 struct fp16_quadratic {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, T) {
+    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>&) {
         const T x = c < T(0) ? -c : c;
         const T v = (T(0.33735186f) * x - T(0.89665001f)) * x + T(1.5707963f);
         if (c >= T(0)) return v;
@@ -212,7 +217,7 @@ template <typename Policy = edge_policy::exact, typename T>
 LTC_HOST_DEVICE inline glm::vec<3, T> edge_integral(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
     const T c = glm::dot(a, b);
     const glm::vec<3, T> axb = detail::stable_cross(a, b, c);
-    return axb * Policy::theta_over_sin(c, glm::length(axb));
+    return axb * Policy::theta_over_sin(c, axb);
 }
 
 /// z component of edge_integral(a, b): the edge's contribution to the clamped-cosine integral
@@ -221,7 +226,7 @@ template <typename Policy = edge_policy::exact, typename T>
 LTC_HOST_DEVICE inline T edge_integral_z(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
     const T c = glm::dot(a, b);
     const glm::vec<3, T> axb = detail::stable_cross(a, b, c);
-    return axb.z * Policy::theta_over_sin(c, glm::length(axb));
+    return axb.z * Policy::theta_over_sin(c, axb);
 }
 
 /// Signed solid angle of the spherical triangle (q, a, b) of unit vectors, by Van Oosterom and

@@ -41,6 +41,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> accurate_cross(const glm::vec<3, T>& a, co
 
 /// Inverse and determinant of a 3x3 matrix through the cross products of its columns:
 /// det = c0 . (c1 x c2) and the rows of the inverse are (c1 x c2, c2 x c0, c0 x c1) / det.
+/// The checked factories use this accurate form (each cofactor with one rounding error).
 template <typename T>
 struct inverse_result {
     glm::mat<3, 3, T> inverse;
@@ -56,17 +57,29 @@ LTC_HOST_DEVICE inline inverse_result<T> accurate_inverse(const glm::mat<3, 3, T
     return {glm::transpose(glm::mat<3, 3, T>(r0, r1, r2)) / det, det};
 }
 
-/// The vertices M^-1 p_i of the transformed polygon, computed on the fly. Each p_i is first
-/// divided by its largest component (the integrals only see directions) so that M^-1 p cannot
-/// overflow for huge finite vertices.
+/// The same with plain cross products: what the cheap constructors use in inner loops, where
+/// std::fma may be a library call (no -mfma) that would cost more than the integral itself.
+template <typename T>
+LTC_HOST_DEVICE inline inverse_result<T> fast_inverse(const glm::mat<3, 3, T>& m) {
+    const glm::vec<3, T> r0 = glm::cross(m[1], m[2]);
+    const glm::vec<3, T> r1 = glm::cross(m[2], m[0]);
+    const glm::vec<3, T> r2 = glm::cross(m[0], m[1]);
+    const T det = glm::dot(m[0], r0);
+    return {glm::transpose(glm::mat<3, 3, T>(r0, r1, r2)) * (T(1) / det), det};
+}
+
+/// The unit directions of M^-1 p_i, computed on the fly. Where M^-1 p overflows (huge finite
+/// vertices) p is first divided by its largest component: the integrals only see directions.
 template <typename T>
 struct transformed_vertices {
     const glm::mat<3, 3, T>& m_inv;
     const glm::vec<3, T>* v;
     LTC_HOST_DEVICE glm::vec<3, T> operator()(std::size_t i) const {
         const glm::vec<3, T> p = v[i];
-        const T s = glm::max(glm::max(std::abs(p.x), std::abs(p.y)), std::abs(p.z));
-        return s > T(0) ? m_inv * (p / s) : glm::vec<3, T>(T(0));
+        const glm::vec<3, T> q = m_inv * p;
+        const T l2 = glm::dot(q, q);
+        if (l2 > T(1e-30) && l2 < T(1e30)) return q * (T(1) / std::sqrt(l2));
+        return safe_normalize(m_inv * rescale_pow2(p));
     }
 };
 
@@ -89,13 +102,13 @@ class transformed {
     /// in inner loops; use checked() for untrusted input). The distribution is invariant to the
     /// scale of M, so any non-zero multiple of M gives the same D.
     LTC_HOST_DEVICE explicit transformed(const mat3& M) {
-        const auto inv = detail::accurate_inverse(M);
+        const auto inv = detail::fast_inverse(M);
         set(M, inv.inverse, T(1) / inv.determinant);
     }
 
     /// D from M^-1 directly, as renderers store it. Same precondition as the constructor.
     LTC_HOST_DEVICE static transformed from_inverse(const mat3& m_inv) {
-        const auto inv = detail::accurate_inverse(m_inv);
+        const auto inv = detail::fast_inverse(m_inv);
         return transformed(inv.inverse, m_inv, inv.determinant);
     }
 

@@ -48,15 +48,29 @@ LTC_HOST_DEVICE inline bool is_finite(const glm::vec<3, T>& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-/// Unit vector along v, or the zero vector when v is zero (a vertex at the shading point).
-/// Scales by the largest component first so that neither |v|^2 overflows for huge inputs
-/// nor underflows for tiny (even subnormal) ones.
+/// Unit vector along v, or the zero vector when v is zero (a vertex at the shading point),
+/// without overflow of |v|^2 for huge inputs nor underflow for tiny (even subnormal) ones.
+/// v times the power of two that brings its largest component into [1, 2): exact (no rounding,
+/// even from or to subnormals), so directions computed from the result are those of v itself.
+/// Returns 0 for v = 0.
 template <typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
+LTC_HOST_DEVICE inline glm::vec<3, T> rescale_pow2(const glm::vec<3, T>& v) {
     const T m = glm::max(glm::max(std::abs(v.x), std::abs(v.y)), std::abs(v.z));
     if (!(m > T(0))) return glm::vec<3, T>(T(0));
-    const glm::vec<3, T> s = v / m;
-    return s / std::sqrt(glm::dot(s, s));
+    const int e = std::ilogb(m);
+    return glm::vec<3, T>(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
+}
+
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
+    const T l2 = glm::dot(v, v);
+    // Fast path: |v|^2 neither overflowed nor lost precision to underflow (a well-predicted
+    // branch). Otherwise an exact power-of-two rescale first, so that the result is bitwise the
+    // one of the rescaled polygon: integrals are invariant under power-of-two scaling.
+    if (l2 > T(1e-30) && l2 < T(1e30)) return v * (T(1) / std::sqrt(l2));
+    const glm::vec<3, T> s = rescale_pow2(v);
+    const T s2 = glm::dot(s, s);
+    return s2 > T(0) ? s * (T(1) / std::sqrt(s2)) : s;
 }
 
 /// a x b for unit vectors, accurate to a few ulps *relative to |a x b|* even when a and b are

@@ -1,0 +1,138 @@
+// Polygon-light integral: the reference shader path (ported in reference_shader.hpp) against the
+// library's exact clipped integral, per edge policy, in float and double. Each benchmark runs over
+// the same 4096 random configurations (GGX-like M^-1, a quad crossing the horizon in ~half of
+// them) and reports ns per evaluation and, as counters, the maximum absolute and relative error
+// against the library's double-precision exact closed form.
+#include "reference_shader.hpp"
+
+#include <ltc/ltc.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace {
+
+struct config {
+    glm::dmat3 m_inv;
+    glm::dvec3 quad[4];
+};
+
+std::uint64_t splitmix(std::uint64_t& s) {
+    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+double uniform(std::uint64_t& s) { return static_cast<double>(splitmix(s) >> 11) * 0x1.0p-53; }
+
+// GGX-fit-like inverse matrices [a 0 b; 0 c 0; d 0 1] (row-major) and rectangles in front of the
+// shading point, rotated at random, so that about half cross the horizon.
+const std::vector<config>& configs() {
+    static const std::vector<config> all = [] {
+        std::vector<config> v;
+        std::uint64_t s = 2016;
+        for (int i = 0; i < 4096; ++i) {
+            config c;
+            const double a = 0.05 + uniform(s), b = -0.5 + uniform(s), cc = 0.05 + uniform(s), d = -0.5 + uniform(s);
+            c.m_inv = glm::transpose(glm::dmat3(a, 0, b, 0, cc, 0, d, 0, 1));
+            const glm::dvec3 centre(-1 + 2 * uniform(s), -1 + 2 * uniform(s), -0.3 + 1.3 * uniform(s));
+            const double phi = 6.283185307179586 * uniform(s), tilt = 3.141592653589793 * uniform(s);
+            const glm::dvec3 ex(std::cos(phi), std::sin(phi), 0);
+            const glm::dvec3 ey = glm::dvec3(-std::sin(phi) * std::cos(tilt), std::cos(phi) * std::cos(tilt), std::sin(tilt));
+            const double w = 0.2 + 0.8 * uniform(s), h = 0.2 + 0.8 * uniform(s);
+            c.quad[0] = centre - w * ex - h * ey;
+            c.quad[1] = centre + w * ex - h * ey;
+            c.quad[2] = centre + w * ex + h * ey;
+            c.quad[3] = centre - w * ex + h * ey;
+            v.push_back(c);
+        }
+        return v;
+    }();
+    return all;
+}
+
+double exact(const config& c) {
+    return ltc::transformed<ltc::clamped_cosine<double>>::from_inverse(c.m_inv).integrate(c.quad, 4, ltc::sidedness::two_sided);
+}
+
+template <typename F>
+void report_errors(benchmark::State& state, F f) {
+    double max_abs = 0, max_rel = 0;
+    for (const config& c : configs()) {
+        const double e = exact(c), v = f(c), err = std::abs(v - e);
+        max_abs = std::max(max_abs, err);
+        if (e > 1e-3) max_rel = std::max(max_rel, err / e);
+    }
+    state.counters["max_abs_err"] = max_abs;
+    state.counters["max_rel_err(I>1e-3)"] = max_rel;
+}
+
+template <typename T>
+struct typed_config {
+    glm::mat<3, 3, T> m_inv;
+    glm::vec<3, T> quad[4];
+};
+
+template <typename T>
+const std::vector<typed_config<T>>& typed_configs() {
+    static const std::vector<typed_config<T>> all = [] {
+        std::vector<typed_config<T>> v;
+        for (const config& c : configs()) {
+            typed_config<T> t;
+            t.m_inv = glm::mat<3, 3, T>(c.m_inv);
+            for (int i = 0; i < 4; ++i) t.quad[i] = glm::vec<3, T>(c.quad[i]);
+            v.push_back(t);
+        }
+        return v;
+    }();
+    return all;
+}
+
+void BM_reference_shader(benchmark::State& state) {
+    const auto& cs = typed_configs<float>();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& c = cs[i++ & 4095];
+        benchmark::DoNotOptimize(reference_shader::ltc_evaluate(c.m_inv, c.quad, true));
+    }
+    state.SetItemsProcessed(state.iterations());
+    report_errors(state, [](const config& c) {
+        glm::vec3 q[4];
+        for (int k = 0; k < 4; ++k) q[k] = glm::vec3(c.quad[k]);
+        return static_cast<double>(reference_shader::ltc_evaluate(glm::mat3(c.m_inv), q, true));
+    });
+}
+
+template <typename T, typename Policy>
+T library(const typed_config<T>& c) {
+    return ltc::transformed<ltc::clamped_cosine<T, Policy>>::from_inverse(c.m_inv).integrate(c.quad, 4, ltc::sidedness::two_sided);
+}
+
+template <typename T, typename Policy>
+void BM_library(benchmark::State& state) {
+    const auto& cs = typed_configs<T>();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(library<T, Policy>(cs[i++ & 4095]));
+    state.SetItemsProcessed(state.iterations());
+    report_errors(state, [](const config& c) {
+        typed_config<T> t;
+        t.m_inv = glm::mat<3, 3, T>(c.m_inv);
+        for (int k = 0; k < 4; ++k) t.quad[k] = glm::vec<3, T>(c.quad[k]);
+        return static_cast<double>(library<T, Policy>(t));
+    });
+}
+
+}  // namespace
+
+BENCHMARK(BM_reference_shader);
+BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::exact);
+BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::polynomial);
+BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::rational);
+BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::fp16_quadratic);
+BENCHMARK_TEMPLATE(BM_library, double, ltc::edge_policy::exact);
+BENCHMARK_TEMPLATE(BM_library, double, ltc::edge_policy::polynomial);
+
+BENCHMARK_MAIN();
