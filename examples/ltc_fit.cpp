@@ -1,0 +1,277 @@
+// ltc_fit -- fits a table of Linearly Transformed Cosines to a BRDF and writes it as a C++
+// header (the shipped include/ltc/tables/ggx.hpp is this program's output):
+//
+//   ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp
+//
+// The fit is ltc::fit::fit_table (include/ltc/fit.hpp, which documents the method); the output
+// depends only on the options that change the fit (--brdf, --size), never on --threads: the
+// same binary writes the same bytes with any thread count.
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/ggx.hpp>
+#include <ltc/fit.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#if defined(_WIN32)
+#include <io.h>
+#define LTC_FIT_ISATTY(fd) _isatty(fd)
+#else
+#include <unistd.h>
+#define LTC_FIT_ISATTY(fd) isatty(fd)
+#endif
+
+namespace {
+
+const char* const usage_text =
+    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--threads K] [--quiet]\n"
+    "\n"
+    "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
+    "method of ltc/fit.hpp, and writes it to FILE as a C++ header defining\n"
+    "ltc::tables::<brdf>_size and ltc::tables::<brdf>_data (N x N nodes x 6 floats: the\n"
+    "normalized inverse matrix m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2], the\n"
+    "magnitude and the Fresnel term; layout in ltc/table.hpp).\n"
+    "\n"
+    "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2\n"
+    "  --out FILE     the header to write ('-' for standard output)\n"
+    "  --size N       nodes per axis (default 64, at least 2)\n"
+    "  --threads K    worker threads (default: all cores); the output does not depend on it\n"
+    "  --quiet        no progress bar (it is only drawn when standard error is a terminal)\n"
+    "  --help         this text\n"
+    "\n"
+    "At the end it prints the time taken and the fit error (relative L1 and L3 distances\n"
+    "between rho*cos and magnitude * LTC, as estimated by the fit) to standard output.\n"
+    "\n"
+    "Regenerate the shipped table:\n"
+    "  ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp\n";
+
+struct arguments {
+    std::string brdf;
+    std::string out;
+    int size = 64;
+    unsigned threads = 0;
+    bool quiet = false;
+};
+
+[[noreturn]] void fail(const std::string& message) {
+    std::cerr << "ltc_fit: " << message << "\n(ltc_fit --help for usage)\n";
+    std::exit(2);
+}
+
+long parse_integer(const std::string& option, const std::string& value, long lo, long hi) {
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(value.c_str(), &end, 10);
+    if (value.empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
+        fail(option + " expects an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
+             value + "'");
+    return v;
+}
+
+arguments parse(int argc, char** argv) {
+    arguments a;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        std::string value;
+        bool has_value = false;
+        const std::size_t eq = arg.find('=');
+        if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {  // --option=value
+            value = arg.substr(eq + 1);
+            arg = arg.substr(0, eq);
+            has_value = true;
+        }
+        const auto next = [&]() -> std::string {
+            if (has_value) return value;
+            if (i + 1 >= argc) fail(arg + " expects a value");
+            return argv[++i];
+        };
+        if (arg == "--help" || arg == "-h") {
+            std::cout << usage_text;
+            std::exit(0);
+        } else if (arg == "--brdf") {
+            a.brdf = next();
+        } else if (arg == "--out" || arg == "-o") {
+            a.out = next();
+        } else if (arg == "--size") {
+            a.size = int(parse_integer(arg, next(), 2, 4096));
+        } else if (arg == "--threads" || arg == "-j") {
+            a.threads = unsigned(parse_integer(arg, next(), 1, 4096));
+        } else if (arg == "--quiet" || arg == "-q") {
+            a.quiet = true;
+        } else {
+            fail("unknown argument '" + arg + "'");
+        }
+    }
+    if (a.brdf.empty()) fail("--brdf is required");
+    if (a.brdf != "ggx" && a.brdf != "beckmann") fail("unknown BRDF '" + a.brdf + "' (ggx or beckmann)");
+    if (a.out.empty()) fail("--out is required");
+    return a;
+}
+
+/// "[=====>      ]  42.0%  1720/4096 nodes  3.1 s elapsed, about 4.3 s left", redrawn in place.
+class progress_bar {
+  public:
+    explicit progress_bar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+
+    void operator()(std::size_t done, std::size_t total) {
+        if (!enabled_ || total == 0) return;
+        const double elapsed = seconds();
+        const double fraction = double(done) / double(total);
+        constexpr int width = 30;
+        const int filled = int(fraction * width);
+        std::string bar(std::size_t(width), ' ');
+        for (int i = 0; i < filled; ++i) bar[std::size_t(i)] = '=';
+        if (filled < width) bar[std::size_t(filled)] = '>';
+        char eta[48] = "estimating time left";
+        if (done > 0 && done < total) std::snprintf(eta, sizeof eta, "about %.0f s left", elapsed * (1 / fraction - 1));
+        if (done >= total) std::snprintf(eta, sizeof eta, "done");
+        std::fprintf(stderr, "\r[%s] %5.1f%%  %zu/%zu nodes  %.1f s elapsed, %-22s", bar.c_str(), 100 * fraction, done,
+                     total, elapsed, eta);
+        if (done >= total) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+    double seconds() const {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+  private:
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+/// %.9g round-trips every float; the f suffix keeps the literal a float.
+std::string float_literal(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", double(v));
+    std::string s = buf;
+    if (s.find_first_of(".e") == std::string::npos) s += ".";
+    return s + "f";
+}
+
+struct error_summary {
+    double mean_l1 = 0, max_l1 = 0, mean_l3 = 0, max_l3 = 0;
+};
+
+error_summary summarize(const ltc::fit::table& tab) {
+    error_summary e;
+    for (const auto& n : tab.nodes) {
+        e.mean_l1 += n.relative_l1;
+        e.mean_l3 += n.relative_l3;
+        e.max_l1 = std::max(e.max_l1, n.relative_l1);
+        e.max_l3 = std::max(e.max_l3, n.relative_l3);
+    }
+    e.mean_l1 /= double(tab.nodes.size());
+    e.mean_l3 /= double(tab.nodes.size());
+    return e;
+}
+
+std::string header_text(const std::string& brdf, const char* description, const ltc::fit::table& tab,
+                        const ltc::fit::options& opt, const error_summary& err) {
+    const int n = tab.size;
+    const std::vector<float> data = tab.packed();
+    std::ostringstream o;
+    char line[256];
+    o << "// ltc/tables/" << brdf << ".hpp -- GENERATED by examples/ltc_fit.cpp; do not edit.\n"
+      << "//\n"
+      << "// Regenerate (from the repository root; the output does not depend on --threads):\n"
+      << "//   cmake --build build --target ltc_fit && ./build/examples/ltc_fit --brdf " << brdf
+      << " --out include/ltc/tables/" << brdf << ".hpp\n"
+      << "//\n"
+      << "// BRDF: " << description << ",\n"
+      << "// no Fresnel (factored out, see the fresnel channel); alpha = max(roughness^2, " << opt.alpha_min
+      << ").\n"
+      << "// Size: " << n << " x " << n << " nodes, " << ltc::channel::count
+      << " floats each; data[((a * " << n << ") + t) * 6 + channel] for node t along\n"
+      << "// u = sqrt(1 - cos theta_v) = t / " << (n - 1) << " (cos theta_v clamped to at least " << opt.cos_theta_min
+      << ") and a along roughness = a / " << (n - 1) << ".\n"
+      << "// Channels: m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] (GLM m[column][row]) of the inverse\n"
+      << "// LTC matrix divided by m_inv[1][1]; magnitude = integral of rho cos; fresnel = integral of\n"
+      << "// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/table.hpp) or ltc::" << brdf << "::fetch.\n"
+      << "// Fit (ltc/fit.hpp): M = R [m11 0 m13; 0 m22 0; m31 0 1], R the rotation to the average direction,\n"
+      << "// minimizing the L3 error integral |rho cos - magnitude D|^3 (MIS over " << opt.error_samples << " x "
+      << opt.error_samples << " BRDF and LTC samples,\n"
+      << "// " << opt.rounds << " rounds, Nelder-Mead tolerance " << opt.tolerance << "); moments over "
+      << opt.moment_samples << " x " << opt.moment_samples << " samples.\n";
+    std::snprintf(line, sizeof line,
+                  "// Fit error (relative to rho cos, as estimated by the fit): L1 mean %.4f, max %.4f; L3 mean %.4f, "
+                  "max %.4f.\n",
+                  err.mean_l1, err.max_l1, err.mean_l3, err.max_l3);
+    o << line << "#pragma once\n\n"
+      << "namespace ltc {\n"
+      << "namespace tables {\n\n"
+      << "inline constexpr int " << brdf << "_size = " << n << ";\n\n"
+      << "inline constexpr float " << brdf << "_data[" << n << " * " << n << " * 6] = {\n";
+    for (int a = 0; a < n; ++a) {
+        std::snprintf(line, sizeof line, "    // a = %d, roughness %.9g\n", a, ltc::fit::node_roughness(a, n));
+        o << line;
+        for (int t = 0; t < n; ++t) {
+            o << "    ";
+            for (int c = 0; c < ltc::channel::count; ++c) {
+                o << float_literal(data[(std::size_t(a) * std::size_t(n) + std::size_t(t)) * 6 + std::size_t(c)]);
+                o << (c + 1 < ltc::channel::count ? ", " : ",");
+            }
+            o << "\n";
+        }
+    }
+    o << "};\n\n"
+      << "}  // namespace tables\n"
+      << "}  // namespace ltc\n";
+    return o.str();
+}
+
+template <template <typename> class Brdf>
+int run(const arguments& args, const char* description) {
+    ltc::fit::options opt;
+    opt.size = args.size;
+    opt.threads = args.threads;
+    const bool draw = !args.quiet && LTC_FIT_ISATTY(2);
+    progress_bar bar(draw);
+    const ltc::fit::table tab = ltc::fit::fit_table<Brdf>(opt, [&](std::size_t done, std::size_t total) { bar(done, total); });
+    const double seconds = bar.seconds();
+    const error_summary err = summarize(tab);
+    const std::string text = header_text(args.brdf, description, tab, opt, err);
+    if (args.out == "-") {
+        std::cout << text;
+    } else {
+        std::ofstream file(args.out, std::ios::binary);
+        file << text;
+        file.close();
+        if (!file) {
+            std::cerr << "ltc_fit: cannot write '" << args.out << "'\n";
+            return 1;
+        }
+    }
+    const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::FILE* summary = args.out == "-" ? stderr : stdout;
+    std::fprintf(summary,
+                 "ltc_fit: %s, %d x %d nodes in %.2f s on %u thread%s; fit error (relative) L1 mean %.4f max %.4f, "
+                 "L3 mean %.4f max %.4f%s%s\n",
+                 args.brdf.c_str(), tab.size, tab.size, seconds, threads, threads == 1 ? "" : "s", err.mean_l1,
+                 err.max_l1, err.mean_l3, err.max_l3, args.out == "-" ? "" : "; wrote ",
+                 args.out == "-" ? "" : args.out.c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const arguments args = parse(argc, argv);
+    try {
+        if (args.brdf == "ggx") return run<ltc::brdf::ggx>(args, "GGX microfacet NDF, Smith height-correlated masking-shadowing");
+        return run<ltc::brdf::beckmann>(args, "Beckmann microfacet NDF, Smith height-correlated masking-shadowing");
+    } catch (const std::exception& e) {
+        std::cerr << "ltc_fit: " << e.what() << "\n";
+        return 1;
+    }
+}
