@@ -29,11 +29,16 @@ class rng {
     /// double in [0, 1) can round up to 1: clamp to the largest float below 1).
     template <typename T>
     glm::vec<2, T> uniform2() {
-        return glm::vec<2, T>(below_one<T>(uniform()), below_one<T>(uniform()));
+        // Two statements: the order of evaluation of constructor arguments is unspecified, and
+        // compilers differ, which would make the "same seed" draw different points.
+        const T x = below_one<T>(uniform());
+        const T y = below_one<T>(uniform());
+        return glm::vec<2, T>(x, y);
     }
     /// Uniform direction on the unit sphere.
     glm::dvec3 direction() {
-        const double z = 1 - 2 * uniform(), phi = 2 * 3.141592653589793 * uniform();
+        const double z = 1 - 2 * uniform();
+        const double phi = 2 * 3.141592653589793 * uniform();
         const double r = std::sqrt(std::max(0.0, 1 - z * z));
         return {r * std::cos(phi), r * std::sin(phi), z};
     }
