@@ -103,13 +103,13 @@ class transformed {
     /// scale of M, so any non-zero multiple of M gives the same D.
     LTC_HOST_DEVICE explicit transformed(const mat3& M) {
         const auto inv = detail::fast_inverse(M);
-        set(M, inv.inverse, T(1) / inv.determinant);
+        set(inv.inverse, T(1) / inv.determinant);
     }
 
     /// D from M^-1 directly, as renderers store it. Same precondition as the constructor.
+    /// Costs one determinant: M itself is only formed by sample() and matrix().
     LTC_HOST_DEVICE static transformed from_inverse(const mat3& m_inv) {
-        const auto inv = detail::fast_inverse(m_inv);
-        return transformed(inv.inverse, m_inv, inv.determinant);
+        return transformed(m_inv, glm::dot(m_inv[0], glm::cross(m_inv[1], m_inv[2])));
     }
 
     /// Like the constructor, but throws ltc::invalid_transform when M has a non-finite entry or
@@ -124,7 +124,7 @@ class transformed {
         const mat3 m = rescaled(M, "M");
         const auto inv = detail::accurate_inverse(m);
         require_invertible(m, inv, "M");
-        return transformed(m, inv.inverse, T(1) / inv.determinant);
+        return transformed(inv.inverse, T(1) / inv.determinant);
     }
 
     /// Like from_inverse(), with the checks of checked() applied to M^-1.
@@ -132,7 +132,7 @@ class transformed {
         const mat3 mi = rescaled(m_inv, "M^-1");
         const auto inv = detail::accurate_inverse(mi);
         require_invertible(mi, inv, "M^-1");
-        return transformed(inv.inverse, mi, inv.determinant);
+        return transformed(mi, inv.determinant);
     }
 
     /// D(w) of eq. (1) at the unit direction w (0 for w = 0).
@@ -160,11 +160,14 @@ class transformed {
     /// by the smallest power-of-16 multiple of epsilon that brings it back (a bias confined to a
     /// set of measure ~cond(M) epsilon, next to a boundary where the density is finite).
     LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
+        // Directions only: M w_o / |M w_o| needs M up to a positive factor, and the adjugate of
+        // M^-1 times the sign of |M^-1| is such a multiple (no division).
+        const mat3 m = adjugate_times_sign();
         const vec3 wo = Dist::sample(u);
-        vec3 w = detail::safe_normalize(m_ * wo);
+        vec3 w = detail::safe_normalize(m * wo);
         T lift = detail::epsilon<T>();
         for (int i = 0; i < 16 && !(Dist::eval(detail::safe_normalize(m_inv_ * w)) > T(0)); ++i, lift *= T(16))
-            w = detail::safe_normalize(m_ * detail::safe_normalize(wo + vec3(T(0), T(0), lift)));
+            w = detail::safe_normalize(m * detail::safe_normalize(wo + vec3(T(0), T(0), lift)));
         return w;
     }
 
@@ -185,16 +188,16 @@ class transformed {
         return apply_sidedness(integrate_signed(vertices, n), s);
     }
 
-    LTC_HOST_DEVICE const mat3& matrix() const { return m_; }
+    /// M, recomputed from the stored M^-1 (equal to the M given to the constructor up to rounding).
+    LTC_HOST_DEVICE mat3 matrix() const { return adjugate_times_sign() * (T(1) / std::abs(det_inv_)); }
     LTC_HOST_DEVICE const mat3& inverse_matrix() const { return m_inv_; }
     /// |M^-1|, the determinant of the inverse matrix.
     LTC_HOST_DEVICE T inverse_determinant() const { return det_inv_; }
 
   private:
-    LTC_HOST_DEVICE transformed(const mat3& M, const mat3& m_inv, T det_inv) { set(M, m_inv, det_inv); }
+    LTC_HOST_DEVICE transformed(const mat3& m_inv, T det_inv) { set(m_inv, det_inv); }
 
-    LTC_HOST_DEVICE void set(const mat3& M, const mat3& m_inv, T det_inv) {
-        m_ = M;
+    LTC_HOST_DEVICE void set(const mat3& m_inv, T det_inv) {
         m_inv_ = m_inv;
         det_inv_ = det_inv;
         abs_det_inv_ = std::abs(det_inv);
@@ -227,7 +230,13 @@ class transformed {
         }
     }
 
-    mat3 m_{T(1)};
+    /// adj(M^-1) sign(|M^-1|) = M |det M^-1|: a positive multiple of M.
+    LTC_HOST_DEVICE mat3 adjugate_times_sign() const {
+        const mat3 adj = glm::transpose(mat3(glm::cross(m_inv_[1], m_inv_[2]), glm::cross(m_inv_[2], m_inv_[0]),
+                                             glm::cross(m_inv_[0], m_inv_[1])));
+        return det_inv_ < T(0) ? -adj : adj;
+    }
+
     mat3 m_inv_{T(1)};
     T det_inv_{1};
     T abs_det_inv_{1};
