@@ -243,11 +243,11 @@ class spherical_polygon {
     };
 
     static triangle make_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        triangle t{a, b, c, triangle_solid_angle(a, b, c), false, {}, {}, {}, spherical_triangle_sampler(a, b, c)};
-        const double s = t.omega > 0.0 ? 1.0 : -1.0;
-        t.n_ab = s * glm::cross(a, b);
-        t.n_bc = s * glm::cross(b, c);
-        t.n_ca = s * glm::cross(c, a);
+        const double omega = triangle_solid_angle(a, b, c);
+        const double s = omega > 0.0 ? 1.0 : -1.0;
+        // Member by member: nvcc's front end mis-parses brace elision around glm vectors here.
+        triangle t{a, b, c, omega, false, s * glm::cross(a, b), s * glm::cross(b, c), s * glm::cross(c, a),
+                   spherical_triangle_sampler(a, b, c)};
         return t;
     }
 

@@ -2,7 +2,8 @@
 //
 // Linearly Transformed Spherical Distributions and Linearly Transformed Cosines
 // (Heitz, Dupuy, Hill, Neubelt, "Real-Time Polygonal-Light Shading with Linearly Transformed
-// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only.
+// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. Including single headers instead
+// keeps compile times down: ltc/ggx.hpp (and what includes it) parses the 64 x 64 table.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -12,3 +13,12 @@
 #include <ltc/clamped_cosine.hpp>
 #include <ltc/squared_clamped_cosine.hpp>
 #include <ltc/transformed.hpp>
+#include <ltc/brdf/model.hpp>
+#include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/table.hpp>
+#include <ltc/ggx.hpp>
+#include <ltc/fit.hpp>
+#include <ltc/clipless.hpp>
+#include <ltc/shading.hpp>
+#include <ltc/ground_truth.hpp>
