@@ -125,9 +125,39 @@ void BM_library(benchmark::State& state) {
     });
 }
 
+// Cost of each step of the library's path, cumulatively: (1) M^-1 p and normalization of the 4
+// vertices; (2) plus the streaming horizon clip (edges folded with a trivial a.z + b.z); the
+// full path with each policy adds the edge terms.
+void BM_step_transform_normalize(benchmark::State& state) {
+    const auto& cs = typed_configs<float>();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& c = cs[i++ & 4095];
+        const ltc::detail::transformed_vertices<float> at{c.m_inv, c.quad};
+        glm::vec3 sum(0.0f);
+        for (std::size_t k = 0; k < 4; ++k) sum += at(k);
+        benchmark::DoNotOptimize(sum);
+    }
+}
+
+void BM_step_transform_normalize_clip(benchmark::State& state) {
+    const auto& cs = typed_configs<float>();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& c = cs[i++ & 4095];
+        float sum = 0;
+        ltc::detail::for_each_unit_edge<float, true>(
+            ltc::detail::transformed_vertices<float>{c.m_inv, c.quad}, 4,
+            [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3&) { sum += a.z + b.z; });
+        benchmark::DoNotOptimize(sum);
+    }
+}
+
 }  // namespace
 
 BENCHMARK(BM_reference_shader);
+BENCHMARK(BM_step_transform_normalize);
+BENCHMARK(BM_step_transform_normalize_clip);
 BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::polynomial);
 BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::rational);
