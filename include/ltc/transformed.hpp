@@ -158,7 +158,8 @@ class transformed {
     /// D_o's horizon (u.x -> 1 for the uniform hemisphere) can be carried across it by the
     /// rounding of M w_o and M^-1 w, where pdf() is 0; such a sample is lifted off the horizon
     /// by the smallest power-of-16 multiple of epsilon that brings it back (a bias confined to a
-    /// set of measure ~cond(M) epsilon, next to a boundary where the density is finite).
+    /// set of measure ~cond(M) epsilon, next to a boundary where the density is finite); for
+    /// numerically degenerate M, where no lift helps, the sample is the image of the pole.
     LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
         // Directions only: M w_o / |M w_o| needs M up to a positive factor, and the adjugate of
         // M^-1 times the sign of |M^-1| is such a multiple (no division).
@@ -166,8 +167,13 @@ class transformed {
         const vec3 wo = Dist::sample(u);
         vec3 w = detail::safe_normalize(m * wo);
         T lift = detail::epsilon<T>();
-        for (int i = 0; i < 16 && !(Dist::eval(detail::safe_normalize(m_inv_ * w)) > T(0)); ++i, lift *= T(16))
+        const auto in_support = [&](const vec3& x) { return Dist::eval(detail::safe_normalize(m_inv_ * x)) > T(0); };
+        for (int i = 0; i < 16 && !in_support(w); ++i, lift *= T(16))
             w = detail::safe_normalize(m * detail::safe_normalize(wo + vec3(T(0), T(0), lift)));
+        // Columns of M of wildly different scales (|c2| / |c0| ~ epsilon, found by fuzzing) drown
+        // w_o.z in the rounding of M w_o whatever the lift: fall back to the image of the pole,
+        // M e_z, where every original distribution of the library is positive.
+        if (!in_support(w)) w = detail::safe_normalize(m[2]);
         return w;
     }
 
