@@ -22,3 +22,6 @@
 #include <ltc/clipless.hpp>
 #include <ltc/shading.hpp>
 #include <ltc/ground_truth.hpp>
+#include <ltc/light_texture.hpp>
+#include <ltc/textured.hpp>
+#include <ltc/textured_ground_truth.hpp>
