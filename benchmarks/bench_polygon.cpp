@@ -5,7 +5,9 @@
 // against the library's double-precision exact closed form.
 #include "reference_shader.hpp"
 
+#include <ltc/clipless.hpp>
 #include <ltc/ltc.hpp>
+#include <ltc/shading.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -153,8 +155,51 @@ void BM_step_transform_normalize_clip(benchmark::State& state) {
     }
 }
 
+// (c) the clipless sphere approximation (Hill 2016), analytic or tabulated.
+template <typename T, ltc::clipless::method How>
+T clipless_path(const typed_config<T>& c) {
+    return ltc::clipless::integrate(ltc::transformed<ltc::clamped_cosine<T>>::from_inverse(c.m_inv), c.quad, 4,
+                                    ltc::sidedness::two_sided, How);
+}
+
+template <typename T, ltc::clipless::method How>
+void BM_clipless(benchmark::State& state) {
+    const auto& cs = typed_configs<T>();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(clipless_path<T, How>(cs[i++ & 4095]));
+    state.SetItemsProcessed(state.iterations());
+    report_errors(state, [](const config& c) {
+        typed_config<T> t;
+        t.m_inv = glm::mat<3, 3, T>(c.m_inv);
+        for (int k = 0; k < 4; ++k) t.quad[k] = glm::vec<3, T>(c.quad[k]);
+        return static_cast<double>(clipless_path<T, How>(t));
+    });
+}
+
+// (d) full GGX shading of a quad light in world space: frame, table fetch, specular + diffuse
+// (no error counter: its reference is the Monte Carlo ground truth, see ggx_error_report).
+template <typename T>
+void BM_ggx_shading(benchmark::State& state) {
+    const auto& cs = typed_configs<T>();
+    using vec3 = glm::vec<3, T>;
+    const vec3 P(0), N(0, 0, 1), F0(T(0.04)), albedo(T(0.5)), radiance(1);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& c = cs[i & 4095];
+        const T t = T((i++ & 63) + 1) / T(64);
+        const vec3 V = glm::normalize(vec3(t, T(0.1), T(1)));
+        benchmark::DoNotOptimize(ltc::shade_polygon_light(P, N, V, t, F0, albedo, radiance, c.quad, 4,
+                                                          ltc::sidedness::two_sided));
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
 }  // namespace
 
+BENCHMARK_TEMPLATE(BM_clipless, float, ltc::clipless::method::analytic);
+BENCHMARK_TEMPLATE(BM_clipless, float, ltc::clipless::method::table);
+BENCHMARK_TEMPLATE(BM_ggx_shading, float);
+BENCHMARK_TEMPLATE(BM_ggx_shading, double);
 BENCHMARK(BM_reference_shader);
 BENCHMARK(BM_step_transform_normalize);
 BENCHMARK(BM_step_transform_normalize_clip);

@@ -1,8 +1,10 @@
 // libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
 // and any matrix accepted by the checked factory, every integral, density and sample of the
-// library is finite. Build: clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined
+// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness. Build: clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined
 // -I include tests/fuzz/fuzz_integrals.cpp; run on tests/fuzz/corpus (see .ci/run).
+#include <ltc/clipless.hpp>
 #include <ltc/ltc.hpp>
+#include <ltc/shading.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -81,6 +83,19 @@ void run(FuzzedDataProvider& in) {
     const std::size_t k = ltc::clip_to_horizon(pv, n, clipped.data());
     if (k > ltc::clipped_capacity(n)) std::abort();
     for (std::size_t i = 0; i < k; ++i) require_finite(clipped[i], "clipped vertex");
+
+    // World-space GGX shading with every horizon-clipping strategy (P, N, V, roughness fuzzed).
+    const vec3 P(finite_value<T>(in), finite_value<T>(in), finite_value<T>(in));
+    const vec3 N(finite_value<T>(in), finite_value<T>(in), finite_value<T>(in));
+    const vec3 V(finite_value<T>(in), finite_value<T>(in), finite_value<T>(in));
+    const T roughness = in.ConsumeProbability<T>();
+    for (const auto clip : {ltc::horizon_clipping::ltc_space, ltc::horizon_clipping::shading_first,
+                            ltc::horizon_clipping::sphere_analytic, ltc::horizon_clipping::sphere_table}) {
+        const auto r = ltc::shade_polygon_light(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
+                                                ltc::sidedness::two_sided, clip);
+        require_finite(r.specular, "GGX specular");
+        require_finite(r.diffuse, "GGX diffuse");
+    }
 
     check_distribution<T, ltc::uniform_sphere<T>>(pv, n, m, use_inverse, u);
     check_distribution<T, ltc::uniform_hemisphere<T>>(pv, n, m, use_inverse, u);
