@@ -25,3 +25,4 @@
 #include <ltc/light_texture.hpp>
 #include <ltc/textured.hpp>
 #include <ltc/textured_ground_truth.hpp>
+#include <ltc/batch.hpp>

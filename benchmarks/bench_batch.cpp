@@ -1,0 +1,226 @@
+// Batch API (ltc/batch.hpp) against the reference shader path (reference_shader.hpp), side by side
+// over the same 4096 random configurations as bench_polygon (GGX-like M^-1, a quad crossing the
+// horizon in about half of them): every benchmark evaluates all 4096 items per iteration and
+// reports items/s (SetItemsProcessed), plus, as counters, the maximum absolute and relative error
+// against the library's double-precision exact closed form.
+//
+// Built twice by CMake: bench_batch (the default target, SSE2 on x86-64) and, where the compiler
+// supports it, bench_batch_avx2 (-march=x86-64-v3: AVX2 + FMA), which exits without running when
+// the CPU lacks AVX2 or FMA. Run them with --benchmark_repetitions=5 and compare medians; the
+// throughput ratio batch / reference is meaningful within one executable (both sides are compiled
+// with the same flags).
+#include "reference_shader.hpp"
+
+#include <ltc/batch.hpp>
+#include <ltc/clamped_cosine.hpp>
+#include <ltc/transformed.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+namespace {
+
+constexpr std::size_t kItems = 4096;
+
+struct config {
+    glm::dmat3 m_inv;
+    glm::dvec3 quad[4];
+};
+
+std::uint64_t splitmix(std::uint64_t& s) {
+    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+double uniform(std::uint64_t& s) { return static_cast<double>(splitmix(s) >> 11) * 0x1.0p-53; }
+
+// The configurations of bench_polygon.cpp, drawn the same way.
+const std::vector<config>& configs() {
+    static const std::vector<config> all = [] {
+        std::vector<config> v;
+        std::uint64_t s = 2016;
+        for (std::size_t i = 0; i < kItems; ++i) {
+            config c;
+            const double a = 0.05 + uniform(s), b = -0.5 + uniform(s), cc = 0.05 + uniform(s), d = -0.5 + uniform(s);
+            c.m_inv = glm::transpose(glm::dmat3(a, 0, b, 0, cc, 0, d, 0, 1));
+            const glm::dvec3 centre(-1 + 2 * uniform(s), -1 + 2 * uniform(s), -0.3 + 1.3 * uniform(s));
+            const double phi = 6.283185307179586 * uniform(s), tilt = 3.141592653589793 * uniform(s);
+            const glm::dvec3 ex(std::cos(phi), std::sin(phi), 0);
+            const glm::dvec3 ey = glm::dvec3(-std::sin(phi) * std::cos(tilt), std::cos(phi) * std::cos(tilt), std::sin(tilt));
+            const double w = 0.2 + 0.8 * uniform(s), h = 0.2 + 0.8 * uniform(s);
+            c.quad[0] = centre - w * ex - h * ey;
+            c.quad[1] = centre + w * ex - h * ey;
+            c.quad[2] = centre + w * ex + h * ey;
+            c.quad[3] = centre - w * ex + h * ey;
+            v.push_back(c);
+        }
+        return v;
+    }();
+    return all;
+}
+
+// The float inputs: array-of-structures for the scalar paths, structure-of-arrays for the batch.
+struct inputs {
+    std::vector<glm::mat3> m_inv;
+    std::vector<std::array<glm::vec3, 4>> quad;
+    std::vector<float> m[3][3];
+    std::vector<float> x[4], y[4], z[4];
+
+    inputs() {
+        for (const config& c : configs()) {
+            m_inv.push_back(glm::mat3(c.m_inv));
+            std::array<glm::vec3, 4> q;
+            for (int k = 0; k < 4; ++k) q[static_cast<std::size_t>(k)] = glm::vec3(c.quad[k]);
+            quad.push_back(q);
+            for (int col = 0; col < 3; ++col)
+                for (int r = 0; r < 3; ++r) m[col][r].push_back(m_inv.back()[col][r]);
+            for (std::size_t k = 0; k < 4; ++k) x[k].push_back(q[k].x), y[k].push_back(q[k].y), z[k].push_back(q[k].z);
+        }
+    }
+    ltc::batch::quad_soa<float> soa() const {
+        const float* e[3][3];
+        for (int col = 0; col < 3; ++col)
+            for (int r = 0; r < 3; ++r) e[col][r] = m[col][r].data();
+        ltc::batch::quad_soa<float> s;
+        s.m_inv = ltc::batch::matrices<float>::per_item(e);
+        for (std::size_t k = 0; k < 4; ++k) s.x[k] = x[k].data(), s.y[k] = y[k].data(), s.z[k] = z[k].data();
+        return s;
+    }
+};
+
+const inputs& data() {
+    static const inputs d;
+    return d;
+}
+
+const std::vector<double>& exact() {
+    static const std::vector<double> e = [] {
+        std::vector<double> v;
+        for (const config& c : configs())
+            v.push_back(ltc::transformed<ltc::clamped_cosine<double>>::from_inverse(c.m_inv).integrate(
+                c.quad, 4, ltc::sidedness::two_sided));
+        return v;
+    }();
+    return e;
+}
+
+void report_errors(benchmark::State& state, const std::vector<float>& out) {
+    double max_abs = 0, max_rel = 0;
+    for (std::size_t i = 0; i < kItems; ++i) {
+        const double e = exact()[i], err = std::abs(static_cast<double>(out[i]) - e);
+        max_abs = std::max(max_abs, err);
+        if (e > 1e-3) max_rel = std::max(max_rel, err / e);
+    }
+    state.counters["max_abs_err"] = max_abs;
+    state.counters["max_rel_err(I>1e-3)"] = max_rel;
+}
+
+void BM_reference_shader(benchmark::State& state) {
+    const inputs& d = data();
+    std::vector<float> out(kItems);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < kItems; ++i) out[i] = reference_shader::ltc_evaluate(d.m_inv[i], d.quad[i].data(), true);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+    report_errors(state, out);
+}
+
+template <typename Policy>
+void BM_library_scalar(benchmark::State& state) {
+    const inputs& d = data();
+    std::vector<float> out(kItems);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < kItems; ++i)
+            out[i] = ltc::transformed<ltc::clamped_cosine<float, Policy>>::from_inverse(d.m_inv[i]).integrate(
+                d.quad[i].data(), 4, ltc::sidedness::two_sided);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+    report_errors(state, out);
+}
+
+template <typename Policy>
+void BM_batch_quads(benchmark::State& state) {
+    const auto soa = data().soa();
+    std::vector<float> out(kItems);
+    for (auto _ : state) {
+        ltc::batch::integrate_quads<Policy>(soa, out.data(), kItems, ltc::sidedness::two_sided);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+    report_errors(state, out);
+}
+
+// The runtime-n blocked kernel on the same quads (what integrate_ngons runs for n > 8).
+void BM_batch_ngons_blocked(benchmark::State& state) {
+    const inputs& d = data();
+    const auto quad = d.soa();
+    const float* xs[4] = {quad.x[0], quad.x[1], quad.x[2], quad.x[3]};
+    const float* ys[4] = {quad.y[0], quad.y[1], quad.y[2], quad.y[3]};
+    const float* zs[4] = {quad.z[0], quad.z[1], quad.z[2], quad.z[3]};
+    ltc::batch::ngon_soa<float> soa;
+    soa.m_inv = quad.m_inv;
+    soa.n = 4;
+    soa.x = xs, soa.y = ys, soa.z = zs;
+    std::vector<float> out(kItems);
+    for (auto _ : state) {
+        ltc::batch::integrate_ngons_blocked(soa, out.data(), kItems, ltc::sidedness::two_sided);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+    report_errors(state, out);
+}
+
+// One shared M^-1 (the first configuration's) for all items: throughput only (the errors are
+// against the per-item exact values, so they are not reported).
+void BM_batch_quads_shared_matrix(benchmark::State& state) {
+    auto soa = data().soa();
+    soa.m_inv = ltc::batch::matrices<float>::same_for_all(data().m_inv[0]);
+    std::vector<float> out(kItems);
+    for (auto _ : state) {
+        ltc::batch::integrate_quads(soa, out.data(), kItems, ltc::sidedness::two_sided);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+}
+
+}  // namespace
+
+BENCHMARK(BM_reference_shader);
+BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::polynomial);
+BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::polynomial);
+BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::rational);
+BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::fp16_quadratic);
+BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::exact);
+BENCHMARK(BM_batch_ngons_blocked);
+BENCHMARK(BM_batch_quads_shared_matrix);
+
+int main(int argc, char** argv) {
+#if defined(LTC_BENCH_NEEDS_X86_64_V3)
+    // This executable is compiled with -march=x86-64-v3: refuse to run on a CPU without AVX2/FMA
+    // (checked before any benchmark code runs; nothing before main uses vector code paths).
+    __builtin_cpu_init();
+    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
+        std::puts("bench_batch_avx2: this CPU lacks AVX2 or FMA; skipped");
+        return 0;
+    }
+#endif
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
