@@ -9,6 +9,7 @@
 // the CPU lacks AVX2 or FMA. Run them with --benchmark_repetitions=5 and compare medians; the
 // throughput ratio batch / reference is meaningful within one executable (both sides are compiled
 // with the same flags).
+#include "configurations.hpp"
 #include "reference_shader.hpp"
 
 #include <ltc/batch.hpp>
@@ -28,43 +29,8 @@ namespace {
 
 constexpr std::size_t kItems = 4096;
 
-struct config {
-    glm::dmat3 m_inv;
-    glm::dvec3 quad[4];
-};
-
-std::uint64_t splitmix(std::uint64_t& s) {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-double uniform(std::uint64_t& s) { return static_cast<double>(splitmix(s) >> 11) * 0x1.0p-53; }
-
-// The configurations of bench_polygon.cpp, drawn the same way.
-const std::vector<config>& configs() {
-    static const std::vector<config> all = [] {
-        std::vector<config> v;
-        std::uint64_t s = 2016;
-        for (std::size_t i = 0; i < kItems; ++i) {
-            config c;
-            const double a = 0.05 + uniform(s), b = -0.5 + uniform(s), cc = 0.05 + uniform(s), d = -0.5 + uniform(s);
-            c.m_inv = glm::transpose(glm::dmat3(a, 0, b, 0, cc, 0, d, 0, 1));
-            const glm::dvec3 centre(-1 + 2 * uniform(s), -1 + 2 * uniform(s), -0.3 + 1.3 * uniform(s));
-            const double phi = 6.283185307179586 * uniform(s), tilt = 3.141592653589793 * uniform(s);
-            const glm::dvec3 ex(std::cos(phi), std::sin(phi), 0);
-            const glm::dvec3 ey = glm::dvec3(-std::sin(phi) * std::cos(tilt), std::cos(phi) * std::cos(tilt), std::sin(tilt));
-            const double w = 0.2 + 0.8 * uniform(s), h = 0.2 + 0.8 * uniform(s);
-            c.quad[0] = centre - w * ex - h * ey;
-            c.quad[1] = centre + w * ex - h * ey;
-            c.quad[2] = centre + w * ex + h * ey;
-            c.quad[3] = centre - w * ex + h * ey;
-            v.push_back(c);
-        }
-        return v;
-    }();
-    return all;
-}
+using bench::config;
+using bench::configs;
 
 // The float inputs: array-of-structures for the scalar paths, structure-of-arrays for the batch.
 struct inputs {

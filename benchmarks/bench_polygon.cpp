@@ -3,6 +3,7 @@
 // the same 4096 random configurations (GGX-like M^-1, a quad crossing the horizon in ~half of
 // them) and reports ns per evaluation and, as counters, the maximum absolute and relative error
 // against the library's double-precision exact closed form.
+#include "configurations.hpp"
 #include "reference_shader.hpp"
 
 #include <ltc/clipless.hpp>
@@ -17,44 +18,8 @@
 
 namespace {
 
-struct config {
-    glm::dmat3 m_inv;
-    glm::dvec3 quad[4];
-};
-
-std::uint64_t splitmix(std::uint64_t& s) {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-double uniform(std::uint64_t& s) { return static_cast<double>(splitmix(s) >> 11) * 0x1.0p-53; }
-
-// GGX-fit-like inverse matrices [a 0 b; 0 c 0; d 0 1] (row-major) and rectangles in front of the
-// shading point, rotated at random, so that about half cross the horizon.
-const std::vector<config>& configs() {
-    static const std::vector<config> all = [] {
-        std::vector<config> v;
-        std::uint64_t s = 2016;
-        for (int i = 0; i < 4096; ++i) {
-            config c;
-            const double a = 0.05 + uniform(s), b = -0.5 + uniform(s), cc = 0.05 + uniform(s), d = -0.5 + uniform(s);
-            c.m_inv = glm::transpose(glm::dmat3(a, 0, b, 0, cc, 0, d, 0, 1));
-            const glm::dvec3 centre(-1 + 2 * uniform(s), -1 + 2 * uniform(s), -0.3 + 1.3 * uniform(s));
-            const double phi = 6.283185307179586 * uniform(s), tilt = 3.141592653589793 * uniform(s);
-            const glm::dvec3 ex(std::cos(phi), std::sin(phi), 0);
-            const glm::dvec3 ey = glm::dvec3(-std::sin(phi) * std::cos(tilt), std::cos(phi) * std::cos(tilt), std::sin(tilt));
-            const double w = 0.2 + 0.8 * uniform(s), h = 0.2 + 0.8 * uniform(s);
-            c.quad[0] = centre - w * ex - h * ey;
-            c.quad[1] = centre + w * ex - h * ey;
-            c.quad[2] = centre + w * ex + h * ey;
-            c.quad[3] = centre - w * ex + h * ey;
-            v.push_back(c);
-        }
-        return v;
-    }();
-    return all;
-}
+using bench::config;
+using bench::configs;
 
 double exact(const config& c) {
     return ltc::transformed<ltc::clamped_cosine<double>>::from_inverse(c.m_inv).integrate(c.quad, 4, ltc::sidedness::two_sided);
