@@ -4,6 +4,7 @@
 #include <ltc/light_texture.hpp>
 
 #include "support/rng.hpp"
+#include "support/images.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -14,15 +15,7 @@
 namespace {
 
 std::vector<glm::vec3> random_image(int w, int h, std::uint64_t seed) {
-    ltc_test::rng r(seed);
-    std::vector<glm::vec3> img(std::size_t(w) * h);
-    for (auto& c : img) {
-        const float x = float(r.uniform(0, 4));
-        const float y = float(r.uniform(0, 1));
-        const float z = float(r.uniform(0, 0.01));
-        c = glm::vec3(x, y, z);
-    }
-    return img;
+    return ltc_test::random_image(w, h, seed, 0.01);
 }
 
 /// The definition (*) of light_texture.hpp evaluated directly in 2D, in double, over every

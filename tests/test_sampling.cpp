@@ -116,8 +116,8 @@ double chi_square_critical_1e4(int nu) {
 // with gamma_3 relative to |M||w_o|, amplified by |M| / |M w_o| <= kappa_F, the normalization
 // and the sampler of D_o <= 10 u), twice that for w_i^2.
 //
-// Unit length. transformed::sample normalizes with safe_normalize (division by the largest
-// component u, dot gamma_3, sqrt u, division u): | |w| - 1 | <= 4u; the original samplers build
+// Unit length. transformed::sample normalizes with safe_normalize (dot gamma_3, sqrt u,
+// reciprocal u, product u; its rare rescaled path is exact): | |w| - 1 | <= 4u; the original samplers build
 // (cos phi sin theta, sin phi sin theta, cos theta) from cos theta and sin theta computed
 // separately (each with <= 3u: 1 - u.x or cbrt, sqrt, products) and cos, sin of phi (u each):
 // | |w| - 1 | <= 3u + 3u + u + u = 8u. Checked: <= 4 eps = 8u (|w| computed in double).

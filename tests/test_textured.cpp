@@ -7,6 +7,7 @@
 #include <ltc/textured_ground_truth.hpp>
 
 #include "support/gauss_legendre.hpp"
+#include "support/images.hpp"
 #include "support/rng.hpp"
 
 #include <catch2/catch.hpp>
@@ -20,15 +21,7 @@ namespace {
 using dvec3 = glm::dvec3;
 
 std::vector<glm::vec3> random_image(int w, int h, std::uint64_t seed) {
-    ltc_test::rng r(seed);
-    std::vector<glm::vec3> img(std::size_t(w) * h);
-    for (auto& c : img) {
-        const float x = float(r.uniform(0, 4));
-        const float y = float(r.uniform(0, 1));
-        const float z = float(r.uniform(0, 2));
-        c = glm::vec3(x, y, z);
-    }
-    return img;
+    return ltc_test::random_image(w, h, seed, 2);
 }
 
 template <typename T>

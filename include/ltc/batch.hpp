@@ -174,13 +174,8 @@ LTC_BATCH_INLINE T rsqrt(T x) {
 template <typename Policy, typename T>
 LTC_BATCH_INLINE T theta_over_sin(T c, T s2, T cx, T cy, T cz, bool& fallback) {
     if constexpr (std::is_same_v<Policy, edge_policy::polynomial>) {
-        // The scalar policy's expressions, in the same order.
-        const T y = T(1) - std::abs(c);
-        const T y2 = y * y, y4 = y2 * y2;
-        const T a01 = T(0.99999999) + T(0.333335381) * y, a23 = T(0.133266572) + T(0.0579778015) * y;
-        const T a45 = T(0.0201634898) + T(0.030059176) * y, a67 = T(-0.0335529978) + T(0.0509757585) * y;
-        const T a89 = T(-0.0325916887) + T(0.0111628242) * y;
-        const T p = (a01 + a23 * y2) + ((a45 + a67 * y2) + a89 * y4) * y4;
+        // The scalar policy's own polynomial, in the same order.
+        const T p = edge_policy::polynomial::positive_branch(T(1) - std::abs(c));
         const bool pos = c >= T(0);
         fallback = !pos & !(s2 > T(1e-30));
         const T neg = pi<T>() * rsqrt(s2) - p;  // pi / s - p

@@ -158,15 +158,20 @@ struct exact {
 /// Chebyshev nodes of [0, 1] (near-minimax: 1.3e-8 relative error in exact arithmetic, below
 /// float rounding), extended to c < 0 by the symmetry f(c) = pi / s - f(-c).
 struct polynomial {
+    /// f(|c|) for y = 1 - |c|, branch-free (shared with the vectorized batch path).
+    /// Estrin's scheme: four levels of independent multiply-adds instead of a chain of nine.
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
-        // Estrin's scheme: four levels of independent multiply-adds instead of a chain of nine.
-        const T y = T(1) - glm::abs(c);
+    LTC_HOST_DEVICE static T positive_branch(T y) {
         const T y2 = y * y, y4 = y2 * y2;
         const T a01 = T(0.99999999) + T(0.333335381) * y, a23 = T(0.133266572) + T(0.0579778015) * y;
         const T a45 = T(0.0201634898) + T(0.030059176) * y, a67 = T(-0.0335529978) + T(0.0509757585) * y;
         const T a89 = T(-0.0325916887) + T(0.0111628242) * y;
-        const T p = (a01 + a23 * y2) + ((a45 + a67 * y2) + a89 * y4) * y4;
+        return (a01 + a23 * y2) + ((a45 + a67 * y2) + a89 * y4) * y4;
+    }
+
+    template <typename T>
+    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
+        const T p = positive_branch(T(1) - glm::abs(c));
         if (c >= T(0)) return p;
         const T s = glm::length(axb);
         return s > detail::min_normal<T>() ? pi<T>() / s - p : T(0);  // s = 0, c < 0: see exact

@@ -69,7 +69,7 @@ LTC_HOST_DEVICE inline inverse_result<T> fast_inverse(const glm::mat<3, 3, T>& m
 }
 
 /// The unit directions of M^-1 p_i, computed on the fly. Where M^-1 p overflows (huge finite
-/// vertices) p is first divided by its largest component: the integrals only see directions.
+/// vertices) p is first rescaled by a power of two (exactly): the integrals only see directions.
 template <typename T>
 struct transformed_vertices {
     const glm::mat<3, 3, T>& m_inv;
