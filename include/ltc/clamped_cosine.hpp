@@ -32,7 +32,7 @@ struct clamped_cosine {
 
     /// Signed integral: eq. (11) over the horizon-clipped polygon (ltc::form_factor_signed).
     template <typename Vertices>
-    LTC_HOST_DEVICE static T signed_integral(const Vertices& v, std::size_t n) {
+    LTC_HOST_DEVICE LTC_INLINE static T signed_integral(const Vertices& v, std::size_t n) {
         return detail::form_factor<T, EdgePolicy>(v, n);
     }
 

@@ -42,7 +42,7 @@ namespace ltc {
 enum class sidedness { one_sided, two_sided };
 
 template <typename T>
-LTC_HOST_DEVICE inline T apply_sidedness(T signed_value, sidedness s) {
+LTC_HOST_DEVICE LTC_INLINE T apply_sidedness(T signed_value, sidedness s) {
     return s == sidedness::two_sided ? std::abs(signed_value)
                                      : (signed_value > T(0) ? signed_value : T(0));
 }
@@ -57,7 +57,7 @@ namespace detail {
 /// to glm vectors or a callable i -> unit vec3 (the latter lets transformed<> apply M^-1 on the
 /// fly, without a vertex buffer).
 template <typename T, typename Vertices>
-LTC_HOST_DEVICE inline glm::vec<3, T> unit_vertex(const Vertices& v, std::size_t i) {
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> unit_vertex(const Vertices& v, std::size_t i) {
     if constexpr (std::is_pointer_v<Vertices>)
         return safe_normalize(glm::vec<3, T>(v[i]));
     else
@@ -67,7 +67,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> unit_vertex(const Vertices& v, std::size_t
 /// The point where the segment from `in` (z >= 0) to `out` (z < 0) meets the plane z = 0, up to
 /// a positive factor: in * (-out.z) + out * in.z needs no division, and z is set to exactly 0.
 template <typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> horizon_crossing_direction(const glm::vec<3, T>& in,
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> horizon_crossing_direction(const glm::vec<3, T>& in,
                                                                  const glm::vec<3, T>& out) {
     glm::vec<3, T> x = in * (-out.z) + out * in.z;
     x.z = T(0);
@@ -77,7 +77,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> horizon_crossing_direction(const glm::vec<
 /// Sutherland-Hodgman against z >= 0, with the crossing point computed by `crossing(in, out)`.
 /// Calls emit(p) for each vertex of the clipped polygon, in order.
 template <typename T, typename VertexAt, typename Crossing, typename Emit>
-LTC_HOST_DEVICE inline void clip_horizon(const VertexAt& at, std::size_t n, const Crossing& crossing,
+LTC_HOST_DEVICE LTC_INLINE void clip_horizon(const VertexAt& at, std::size_t n, const Crossing& crossing,
                                          Emit&& emit) {
     // Start with the closing edge (n-1 -> 0) so that an unclipped polygon comes out unchanged.
     glm::vec<3, T> p = at(n - 1);
@@ -91,21 +91,11 @@ LTC_HOST_DEVICE inline void clip_horizon(const VertexAt& at, std::size_t n, cons
     }
 }
 
-/// Calls edge(a, b, first) for each edge a -> b of the polygon as unit vectors, where `first`
-/// is the polygon's first unit vertex (an apex for fan triangulations). With clip = true the
-/// polygon is first clipped to z >= 0. Returns false when a vertex is at the
-/// origin (the polygon is seen edge-on; the edges seen so far have then been called with a zero
-/// vertex, which every edge term maps to a finite value) or n < 3: callers discard the sum.
-template <typename T, bool clip, typename Vertices, typename EdgeFn>
-LTC_HOST_DEVICE inline bool for_each_unit_edge(const Vertices& vertices, std::size_t n, EdgeFn&& edge) {
+/// Calls edge(last, p, first) for each edge of the polygon whose unit vertices at(i) are given,
+/// clipped to z >= 0 first when clip is true (Sutherland-Hodgman, streaming: no vertex buffer).
+template <typename T, bool clip, typename VertexAt, typename EdgeFn>
+LTC_HOST_DEVICE LTC_INLINE void stream_unit_edges(const VertexAt& at, std::size_t n, EdgeFn& edge) {
     using vec3 = glm::vec<3, T>;
-    if (n < 3) return false;
-    bool at_origin = false;
-    const auto unit_at = [&](std::size_t i) {
-        const vec3 u = unit_vertex<T>(vertices, i);
-        at_origin = at_origin || u == vec3(T(0));
-        return u;
-    };
     vec3 first(T(0)), last(T(0));
     bool started = false;
     const auto emit = [&](const vec3& p) {
@@ -119,11 +109,57 @@ LTC_HOST_DEVICE inline bool for_each_unit_edge(const Vertices& vertices, std::si
         const auto crossing = [](const vec3& in, const vec3& out) {
             return safe_normalize(horizon_crossing_direction(in, out));
         };
-        clip_horizon<T>(unit_at, n, crossing, emit);
+        clip_horizon<T>(at, n, crossing, emit);
     } else {
-        for (std::size_t i = 0; i < n; ++i) emit(unit_at(i));
+        for (std::size_t i = 0; i < n; ++i) emit(at(i));
     }
     if (started) edge(last, first, first);
+}
+
+/// for_each_unit_edge for polygons of n <= small_polygon vertices: the unit vertices are computed
+/// up front, on the stack, so that all normalizations are independent (they overlap in the
+/// pipeline), and the common cases, a polygon wholly above or wholly below the horizon, skip the
+/// clipper's per-vertex branches. The edges, their order and their values are those of the
+/// streaming path.
+inline constexpr std::size_t small_polygon = 8;
+
+template <typename T, bool clip, typename Vertices, typename EdgeFn>
+LTC_HOST_DEVICE LTC_INLINE bool for_each_small_unit_edge(const Vertices& vertices, std::size_t n, EdgeFn& edge) {
+    using vec3 = glm::vec<3, T>;
+    vec3 u[small_polygon];
+    bool at_origin = false;
+    std::size_t above = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        u[i] = unit_vertex<T>(vertices, i);
+        at_origin = at_origin || u[i] == vec3(T(0));
+        above += u[i].z >= T(0) ? 1 : 0;
+    }
+    if (!clip || above == n) {
+        for (std::size_t i = 0; i + 1 < n; ++i) edge(u[i], u[i + 1], u[0]);
+        edge(u[n - 1], u[0], u[0]);
+    } else if (above > 0) {
+        stream_unit_edges<T, clip>([&](std::size_t i) { return u[i]; }, n, edge);
+    }
+    return !at_origin;
+}
+
+/// Calls edge(a, b, first) for each edge a -> b of the polygon as unit vectors, where `first`
+/// is the polygon's first unit vertex (an apex for fan triangulations). With clip = true the
+/// polygon is first clipped to z >= 0. Returns false when a vertex is at the
+/// origin (the polygon is seen edge-on; the edges seen so far have then been called with a zero
+/// vertex, which every edge term maps to a finite value) or n < 3: callers discard the sum.
+template <typename T, bool clip, typename Vertices, typename EdgeFn>
+LTC_HOST_DEVICE LTC_INLINE bool for_each_unit_edge(const Vertices& vertices, std::size_t n, EdgeFn&& edge) {
+    using vec3 = glm::vec<3, T>;
+    if (n < 3) return false;
+    if (n <= small_polygon) return for_each_small_unit_edge<T, clip>(vertices, n, edge);
+    bool at_origin = false;
+    const auto unit_at = [&](std::size_t i) {
+        const vec3 u = unit_vertex<T>(vertices, i);
+        at_origin = at_origin || u == vec3(T(0));
+        return u;
+    };
+    stream_unit_edges<T, clip>(unit_at, n, edge);
     return !at_origin;
 }
 
@@ -132,7 +168,7 @@ LTC_HOST_DEVICE inline bool for_each_unit_edge(const Vertices& vertices, std::si
 /// length (c > 0: the limit is 1) or passes through the shading point (c < 0: no great circle;
 /// its cross product is ~0 and we return 0 so that the product stays finite).
 template <typename T>
-LTC_HOST_DEVICE inline T theta_over_sin(T s, T c) {
+LTC_HOST_DEVICE LTC_INLINE T theta_over_sin(T s, T c) {
     if (s > min_normal<T>()) return std::atan2(s, c) / s;
     return c > T(0) ? T(1) : T(0);
 }
@@ -149,7 +185,7 @@ namespace edge_policy {
 /// atan2(s, c) / s: correct to a few ulps at every angle.
 struct exact {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
+    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
         return detail::theta_over_sin(glm::length(axb), c);
     }
 };
@@ -161,7 +197,7 @@ struct polynomial {
     /// f(|c|) for y = 1 - |c|, branch-free (shared with the vectorized batch path).
     /// Estrin's scheme: four levels of independent multiply-adds instead of a chain of nine.
     template <typename T>
-    LTC_HOST_DEVICE static T positive_branch(T y) {
+    LTC_HOST_DEVICE LTC_INLINE static T positive_branch(T y) {
         const T y2 = y * y, y4 = y2 * y2;
         const T a01 = T(0.99999999) + T(0.333335381) * y, a23 = T(0.133266572) + T(0.0579778015) * y;
         const T a45 = T(0.0201634898) + T(0.030059176) * y, a67 = T(-0.0335529978) + T(0.0509757585) * y;
@@ -170,7 +206,7 @@ struct polynomial {
     }
 
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
+    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
         const T p = positive_branch(T(1) - glm::abs(c));
         if (c >= T(0)) return p;
         const T s = glm::length(axb);
@@ -183,7 +219,7 @@ struct polynomial {
 /// 1 / sqrt(max(1 - c^2, 1e-7)) as the shader does.
 struct rational {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>&) {
+    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>&) {
         const T y = glm::abs(c);
         const T a = T(0.8543985) + (T(0.4965155) + T(0.0145206) * y) * y;
         const T b = T(3.4175940) + (T(4.1616724) + y) * y;
@@ -199,7 +235,7 @@ struct rational {
 /// Instantiable with T = _Float16 (real half-precision arithmetic; sqrt through float).
 struct fp16_quadratic {
     template <typename T>
-    LTC_HOST_DEVICE static T theta_over_sin(T c, const glm::vec<3, T>&) {
+    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>&) {
         const T x = c < T(0) ? -c : c;
         const T v = (T(0.33735186f) * x - T(0.89665001f)) * x + T(1.5707963f);
         if (c >= T(0)) return v;
@@ -215,7 +251,7 @@ struct fp16_quadratic {
 /// cancellation-free cross product, so it is accurate for nearly parallel and nearly opposite
 /// vertices (no acos of a dot product near +-1, no division by a vanishing sine).
 template <typename Policy = edge_policy::exact, typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> edge_integral(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> edge_integral(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
     const T c = glm::dot(a, b);
     const glm::vec<3, T> axb = detail::stable_cross(a, b, c);
     return axb * Policy::theta_over_sin(c, axb);
@@ -224,7 +260,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> edge_integral(const glm::vec<3, T>& a, con
 /// z component of edge_integral(a, b): the edge's contribution to the clamped-cosine integral
 /// (times 2 pi).
 template <typename Policy = edge_policy::exact, typename T>
-LTC_HOST_DEVICE inline T edge_integral_z(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+LTC_HOST_DEVICE LTC_INLINE T edge_integral_z(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
     const T c = glm::dot(a, b);
     const glm::vec<3, T> axb = detail::stable_cross(a, b, c);
     return axb.z * Policy::theta_over_sin(c, axb);
@@ -235,7 +271,7 @@ LTC_HOST_DEVICE inline T edge_integral_z(const glm::vec<3, T>& a, const glm::vec
 /// evaluated as (q - a).(a x (b -+ a)), which is exact in exact arithmetic and keeps full
 /// relative accuracy for tiny triangles.
 template <typename T>
-LTC_HOST_DEVICE inline T triangle_solid_angle(const glm::vec<3, T>& q, const glm::vec<3, T>& a,
+LTC_HOST_DEVICE LTC_INLINE T triangle_solid_angle(const glm::vec<3, T>& q, const glm::vec<3, T>& a,
                                               const glm::vec<3, T>& b) {
     const T ab = glm::dot(a, b);
     const T triple = glm::dot(q - a, detail::stable_cross(a, b, ab));
@@ -251,7 +287,7 @@ LTC_HOST_DEVICE inline T triangle_solid_angle(const glm::vec<3, T>& q, const glm
 /// polygon the result may contain edges that run back and forth along z = 0: they cancel in
 /// every integral of this library (the winding number is unchanged).
 template <typename T>
-LTC_HOST_DEVICE inline std::size_t clip_to_horizon(const glm::vec<3, T>* in, std::size_t n,
+LTC_HOST_DEVICE LTC_INLINE std::size_t clip_to_horizon(const glm::vec<3, T>* in, std::size_t n,
                                                    glm::vec<3, T>* out) {
     if (n < 3) return 0;
     std::size_t m = 0;
@@ -277,7 +313,7 @@ LTC_HOST_DEVICE inline std::size_t clip_to_horizon(const glm::vec<3, T>* in, std
 /// integral without horizon clipping; |F| and its direction define the equivalent sphere of the
 /// horizon-clipping approximation.
 template <typename Policy = edge_policy::exact, typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> vector_form_factor(const glm::vec<3, T>* v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> vector_form_factor(const glm::vec<3, T>* v, std::size_t n) {
     glm::vec<3, T> f(T(0));
     const bool ok = detail::for_each_unit_edge<T, false>(
         v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
@@ -289,7 +325,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> vector_form_factor(const glm::vec<3, T>* v
 namespace detail {
 
 template <typename T, typename Vertices>
-LTC_HOST_DEVICE inline T solid_angle(const Vertices& v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE T solid_angle(const Vertices& v, std::size_t n) {
     T omega(0);
     // Fan from the first vertex: each triangle is the projection of a planar one, so it lies
     // in an open hemisphere and Van Oosterom's formula applies.
@@ -306,13 +342,13 @@ LTC_HOST_DEVICE inline T solid_angle(const Vertices& v, std::size_t n) {
 /// eq. (11) itself, even for polygons close to or in the horizon plane where a fan from one of
 /// their own vertices would be made of nearly flat, nearly hemispherical triangles.
 template <typename T>
-LTC_HOST_DEVICE inline T pole_triangle_solid_angle(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
+LTC_HOST_DEVICE LTC_INLINE T pole_triangle_solid_angle(const glm::vec<3, T>& a, const glm::vec<3, T>& b) {
     const T ab = glm::dot(a, b);
     return T(2) * std::atan2(stable_cross(a, b, ab).z, T(1) + a.z + b.z + ab);
 }
 
 template <typename T, typename Vertices>
-LTC_HOST_DEVICE inline T clipped_solid_angle(const Vertices& v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE T clipped_solid_angle(const Vertices& v, std::size_t n) {
     T omega(0);
     const bool ok = for_each_unit_edge<T, true>(
         v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
@@ -322,7 +358,7 @@ LTC_HOST_DEVICE inline T clipped_solid_angle(const Vertices& v, std::size_t n) {
 }
 
 template <typename T, typename Policy = edge_policy::exact, typename Vertices>
-LTC_HOST_DEVICE inline T form_factor(const Vertices& v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE T form_factor(const Vertices& v, std::size_t n) {
     T sum(0);
     const bool ok = for_each_unit_edge<T, true>(
         v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
@@ -335,13 +371,13 @@ LTC_HOST_DEVICE inline T form_factor(const Vertices& v, std::size_t n) {
 
 /// Signed solid angle subtended by the polygon (no clipping), in (-2 pi, 2 pi).
 template <typename T>
-LTC_HOST_DEVICE inline T solid_angle(const glm::vec<3, T>* v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE T solid_angle(const glm::vec<3, T>* v, std::size_t n) {
     return detail::solid_angle<T>(v, n);
 }
 
 /// Signed solid angle of the part of the polygon above the horizon z >= 0, in (-2 pi, 2 pi).
 template <typename T>
-LTC_HOST_DEVICE inline T clipped_solid_angle(const glm::vec<3, T>* v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE T clipped_solid_angle(const glm::vec<3, T>* v, std::size_t n) {
     return detail::clipped_solid_angle<T>(v, n);
 }
 
@@ -349,13 +385,13 @@ LTC_HOST_DEVICE inline T clipped_solid_angle(const glm::vec<3, T>* v, std::size_
 /// E = 1/(2 pi) sum_i theta_i (p_i x p_j / |p_i x p_j|).z, on the clipped polygon.
 /// Policy selects the evaluation of theta / sin(theta) (see edge_policy).
 template <typename Policy = edge_policy::exact, typename T>
-LTC_HOST_DEVICE inline T form_factor_signed(const glm::vec<3, T>* v, std::size_t n) {
+LTC_HOST_DEVICE LTC_INLINE T form_factor_signed(const glm::vec<3, T>* v, std::size_t n) {
     return detail::form_factor<T, Policy>(v, n);
 }
 
 /// form_factor_signed made non-negative for a one-sided or two-sided emitter.
 template <typename Policy = edge_policy::exact, typename T>
-LTC_HOST_DEVICE inline T form_factor(const glm::vec<3, T>* v, std::size_t n, sidedness s) {
+LTC_HOST_DEVICE LTC_INLINE T form_factor(const glm::vec<3, T>* v, std::size_t n, sidedness s) {
     return apply_sidedness(form_factor_signed<Policy>(v, n), s);
 }
 

@@ -74,12 +74,15 @@ template <typename T>
 struct transformed_vertices {
     const glm::mat<3, 3, T>& m_inv;
     const glm::vec<3, T>* v;
-    LTC_HOST_DEVICE glm::vec<3, T> operator()(std::size_t i) const {
+    LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> operator()(std::size_t i) const {
         const glm::vec<3, T> p = v[i];
         const glm::vec<3, T> q = m_inv * p;
         const T l2 = glm::dot(q, q);
         if (l2 > T(1e-30) && l2 < T(1e30)) return q * (T(1) / std::sqrt(l2));
-        return safe_normalize(m_inv * rescale_pow2(p));
+        return rescaled(m_inv, p);
+    }
+    static LTC_HOST_DEVICE LTC_NOINLINE glm::vec<3, T> rescaled(const glm::mat<3, 3, T>& m, const glm::vec<3, T>& p) {
+        return safe_normalize(m * rescale_pow2(p));
     }
 };
 
@@ -179,7 +182,7 @@ class transformed {
 
     /// Signed integral of D over the polygon: eq. (3), D_o's closed form over M^-1 P, times the
     /// sign of |M^-1| so that the sign refers to P's own orientation (see polygon.hpp).
-    LTC_HOST_DEVICE T integrate_signed(const vec3* vertices, std::size_t n) const {
+    LTC_HOST_DEVICE LTC_INLINE T integrate_signed(const vec3* vertices, std::size_t n) const {
         const T s = Dist::signed_integral(detail::transformed_vertices<T>{m_inv_, vertices}, n);
         return det_inv_ < T(0) ? -s : s;
     }
@@ -190,7 +193,7 @@ class transformed {
     }
 
     /// Integral seen by a one-sided (max(0, signed)) or two-sided (|signed|) emitter.
-    LTC_HOST_DEVICE T integrate(const vec3* vertices, std::size_t n, sidedness s) const {
+    LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n, sidedness s) const {
         return apply_sidedness(integrate_signed(vertices, n), s);
     }
 

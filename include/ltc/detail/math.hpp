@@ -39,7 +39,7 @@ LTC_HOST_DEVICE constexpr T epsilon() {
 }
 
 template <typename T>
-LTC_HOST_DEVICE inline T safe_sqrt(T x) {
+LTC_HOST_DEVICE LTC_INLINE T safe_sqrt(T x) {
     return std::sqrt(x > T(0) ? x : T(0));
 }
 
@@ -61,16 +61,23 @@ LTC_HOST_DEVICE inline glm::vec<3, T> rescale_pow2(const glm::vec<3, T>& v) {
     return glm::vec<3, T>(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
 }
 
+/// safe_normalize's slow path, kept out of line: an exact power-of-two rescale first, so that the
+/// result is bitwise the one of the rescaled polygon (integrals are invariant under power-of-two
+/// scaling).
 template <typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
-    const T l2 = glm::dot(v, v);
-    // Fast path: |v|^2 neither overflowed nor lost precision to underflow (a well-predicted
-    // branch). Otherwise an exact power-of-two rescale first, so that the result is bitwise the
-    // one of the rescaled polygon: integrals are invariant under power-of-two scaling.
-    if (l2 > T(1e-30) && l2 < T(1e30)) return v * (T(1) / std::sqrt(l2));
+LTC_HOST_DEVICE LTC_NOINLINE glm::vec<3, T> safe_normalize_rescaled(const glm::vec<3, T>& v) {
     const glm::vec<3, T> s = rescale_pow2(v);
     const T s2 = glm::dot(s, s);
     return s2 > T(0) ? s * (T(1) / std::sqrt(s2)) : s;
+}
+
+template <typename T>
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
+    const T l2 = glm::dot(v, v);
+    // Fast path: |v|^2 neither overflowed nor lost precision to underflow (a well-predicted
+    // branch).
+    if (l2 > T(1e-30) && l2 < T(1e30)) return v * (T(1) / std::sqrt(l2));
+    return safe_normalize_rescaled(v);
 }
 
 /// a x b for unit vectors, accurate to a few ulps *relative to |a x b|* even when a and b are
@@ -78,7 +85,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
 /// (or sum) of two nearly equal vectors is computed almost exactly (Sterbenz), so the
 /// cancellation that a plain cross product suffers never happens.
 template <typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> stable_cross(const glm::vec<3, T>& a, const glm::vec<3, T>& b,
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> stable_cross(const glm::vec<3, T>& a, const glm::vec<3, T>& b,
                                                    T a_dot_b) {
     return glm::cross(a, a_dot_b >= T(0) ? b - a : b + a);
 }
