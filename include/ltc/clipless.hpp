@@ -277,12 +277,12 @@ LTC_HOST_DEVICE inline T orientation(const VertexAt& at, std::size_t n) {
 }
 
 /// Unclipped vector form factor of the polygon whose i-th vertex is at(i) (any callable).
-template <typename T, typename VertexAt>
+template <typename T, typename Policy, typename VertexAt>
 LTC_HOST_DEVICE inline glm::vec<3, T> vector_form_factor(const VertexAt& at, std::size_t n) {
     glm::vec<3, T> f(T(0));
     const bool ok = ltc::detail::for_each_unit_edge<T, false>(
         at, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
-            f += edge_integral(a, b);
+            f += edge_integral<Policy>(a, b);
         });
     return ok ? f / (T(2) * pi<T>()) : glm::vec<3, T>(T(0));
 }
@@ -295,8 +295,8 @@ LTC_HOST_DEVICE inline equivalent_sphere<T> sphere_of(const glm::vec<3, T>& F, T
 }
 
 /// Signed clipless integral of the clamped cosine over M^-1 P, P given by at(i) in the local
-/// frame, M^-1 = m_inv.
-template <typename T, typename VertexAt>
+/// frame, M^-1 = m_inv; Policy evaluates the edge terms of the vector form factor.
+template <typename T, typename Policy, typename VertexAt>
 LTC_HOST_DEVICE inline T integrate_signed(const glm::mat<3, 3, T>& m_inv, T det_inv, const VertexAt& at,
                                           std::size_t n, method how, const sphere_table* table) {
     using vec3 = glm::vec<3, T>;
@@ -305,9 +305,10 @@ LTC_HOST_DEVICE inline T integrate_signed(const glm::mat<3, 3, T>& m_inv, T det_
     const auto transformed_at = [&](std::size_t i) {
         const vec3 p = at(i);
         const T s = glm::max(glm::max(std::abs(p.x), std::abs(p.y)), std::abs(p.z));
-        return s > T(0) ? m_inv * (p / s) : vec3(T(0));
+        // Unit vectors: every edge policy but exact assumes them.
+        return s > T(0) ? ltc::detail::safe_normalize(m_inv * (p / s)) : vec3(T(0));
     };
-    const vec3 F = vector_form_factor<T>(transformed_at, n);
+    const vec3 F = vector_form_factor<T, Policy>(transformed_at, n);
     const T facing_ltc = det_inv < T(0) ? -facing : facing;  // orientation of M^-1 P
     const equivalent_sphere<T> sph = sphere_of(F, facing_ltc);
     if (sph.sign == T(0)) return T(0);
@@ -332,7 +333,7 @@ template <typename T>
 inline T form_factor_signed(const glm::vec<3, T>* vertices, std::size_t n, method how = method::analytic) {
     const auto at = [&](std::size_t i) { return glm::vec<3, T>(vertices[i]); };
     const sphere_table* table = how == method::table ? &sphere_table::instance() : nullptr;
-    return detail::integrate_signed<T>(glm::mat<3, 3, T>(T(1)), T(1), at, n, how, table);
+    return detail::integrate_signed<T, edge_policy::exact>(glm::mat<3, 3, T>(T(1)), T(1), at, n, how, table);
 }
 
 /// Clipless approximation of ltc::form_factor.
@@ -343,18 +344,19 @@ inline T form_factor(const glm::vec<3, T>* vertices, std::size_t n, sidedness si
 }
 
 /// Clipless approximation of d.integrate_signed(vertices, n): the unclipped vector form factor
-/// of M^-1 P, its equivalent sphere, and the sphere's horizon-clipped form factor.
-template <typename T>
-inline T integrate_signed(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T>* vertices,
+/// of M^-1 P, its equivalent sphere, and the sphere's horizon-clipped form factor. The edge
+/// terms of the vector form factor use the distribution's edge policy.
+template <typename T, typename Policy>
+inline T integrate_signed(const transformed<clamped_cosine<T, Policy>>& d, const glm::vec<3, T>* vertices,
                           std::size_t n, method how = method::analytic) {
     const auto at = [&](std::size_t i) { return glm::vec<3, T>(vertices[i]); };
     const sphere_table* table = how == method::table ? &sphere_table::instance() : nullptr;
-    return detail::integrate_signed<T>(d.inverse_matrix(), d.inverse_determinant(), at, n, how, table);
+    return detail::integrate_signed<T, Policy>(d.inverse_matrix(), d.inverse_determinant(), at, n, how, table);
 }
 
 /// Clipless approximation of d.integrate(vertices, n, side).
-template <typename T>
-inline T integrate(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T>* vertices, std::size_t n,
+template <typename T, typename Policy>
+inline T integrate(const transformed<clamped_cosine<T, Policy>>& d, const glm::vec<3, T>* vertices, std::size_t n,
                    sidedness side, method how = method::analytic) {
     return apply_sidedness(integrate_signed(d, vertices, n, how), side);
 }

@@ -315,8 +315,8 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
             const clipless::sphere_table* table =
                 how == clipless::method::table ? &clipless::sphere_table::instance() : nullptr;
 #endif
-            r.form_factor = clipless::detail::integrate_signed<T>(glm::mat<3, 3, T>(T(1)), T(1), local_raw, n, how, table);
-            r.ltc = clipless::detail::integrate_signed<T>(m_inv, glm::determinant(m_inv), local_raw, n, how, table);
+            r.form_factor = clipless::detail::integrate_signed<T, edge_policy::exact>(glm::mat<3, 3, T>(T(1)), T(1), local_raw, n, how, table);
+            r.ltc = clipless::detail::integrate_signed<T, edge_policy::exact>(m_inv, glm::determinant(m_inv), local_raw, n, how, table);
             return r;
         }
         case horizon_clipping::ltc_space:
