@@ -60,6 +60,20 @@ TEMPLATE_TEST_CASE("edge_policy::polynomial is accurate to float rounding", "[ed
     CHECK(scan<ltc::edge_policy::polynomial, double>(-1.0L + 1e-6L).max_rel < 3e-6 / 100);
 }
 
+TEMPLATE_TEST_CASE("edge_policy::minimax_rational is accurate to float rounding", "[edge-policy]", float, double) {
+    using T = TestType;
+    // Fit error 4.1e-8 (exact arithmetic, 4001 points when fitting). Rounding, by running error
+    // analysis of the evaluation in T: y = 1 - c is exact for c >= 1/2 and within u of y
+    // otherwise, where f varies slowly (|y f'(y) / f| <= 0.5); Horner's rule for p (degree 3,
+    // sum |p_i| y^i / |p| <= 1.46 / 0.577) and q (degree 2, <= 1.92 / 0.367) costs 6 u * 2.53 and
+    // 4 u * 5.22, the division u, and pi / s - p for c < 0 another 3 u: about 41 u in all.
+    const error_at e = scan<ltc::edge_policy::minimax_rational, T>(-1.0L + 1e-6L);
+    CAPTURE(e.max_rel, e.at);
+    CHECK(e.max_rel <= 4.1e-8 + 41 * u<T>());
+    // Also beats the 3e-6 of published 6-term engine fits by almost two orders of magnitude.
+    CHECK(scan<ltc::edge_policy::minimax_rational, double>(-1.0L + 1e-6L).max_rel < 3e-6 / 50);
+}
+
 TEMPLATE_TEST_CASE("edge_policy::rational reproduces the reference shader's accuracy", "[edge-policy]", float,
                    double) {
     using T = TestType;
@@ -100,6 +114,7 @@ TEMPLATE_TEST_CASE("edge policies agree on polygon integrals within their factor
     // |sum of edge terms| <= sum |theta_i| |n_i.z| / (2 pi) <= n pi / (2 pi): a relative factor
     // error r changes the result by at most r * n / 2 in absolute value.
     CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::polynomial>(quad, 4) - exact) <= (1.3e-8 + 16 * u<T>()) * 2);
+    CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::minimax_rational>(quad, 4) - exact) <= (4.1e-8 + 41 * u<T>()) * 2);
     CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::rational>(quad, 4) - exact) <= (5e-5 + 16 * u<T>()) * 2);
     CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::fp16_quadratic>(quad, 4) - exact) <= 0.0116 * 2);
     const vec3 f = ltc::vector_form_factor<ltc::edge_policy::polynomial>(quad, 4);

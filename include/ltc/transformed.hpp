@@ -72,7 +72,7 @@ LTC_HOST_DEVICE inline inverse_result<T> fast_inverse(const glm::mat<3, 3, T>& m
 /// vertices) p is first rescaled by a power of two (exactly): the integrals only see directions.
 template <typename T>
 struct transformed_vertices {
-    const glm::mat<3, 3, T>& m_inv;
+    glm::mat<3, 3, T> m_inv;  // a copy: a reference would keep the owning transformed<> in memory
     const glm::vec<3, T>* v;
     LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> operator()(std::size_t i) const {
         const glm::vec<3, T> p = v[i];
@@ -81,6 +81,8 @@ struct transformed_vertices {
         if (l2 > T(1e-30) && l2 < T(1e30)) return q * (T(1) / std::sqrt(l2));
         return rescaled(m_inv, p);
     }
+    /// M^-1 p_i before normalization (for the quad path of polygon.hpp).
+    LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> raw(std::size_t i) const { return m_inv * v[i]; }
     static LTC_HOST_DEVICE LTC_NOINLINE glm::vec<3, T> rescaled(const glm::mat<3, 3, T>& m, const glm::vec<3, T>& p) {
         return safe_normalize(m * rescale_pow2(p));
     }
@@ -194,7 +196,10 @@ class transformed {
 
     /// Integral seen by a one-sided (max(0, signed)) or two-sided (|signed|) emitter.
     LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n, sidedness s) const {
-        return apply_sidedness(integrate_signed(vertices, n), s);
+        // Two-sided: |integral| does not need the sign of |M^-1| (nor, when the compiler sees s, its
+        // determinant).
+        const T s_o = Dist::signed_integral(detail::transformed_vertices<T>{m_inv_, vertices}, n);
+        return s == sidedness::two_sided ? std::abs(s_o) : apply_sidedness(det_inv_ < T(0) ? -s_o : s_o, s);
     }
 
     /// M, recomputed from the stored M^-1 (equal to the M given to the constructor up to rounding).
