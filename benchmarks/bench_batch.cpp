@@ -166,7 +166,9 @@ void BM_batch_quads_shared_matrix(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_reference_shader);
+BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::polynomial);
+BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::polynomial);
 BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::rational);
 BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::fp16_quadratic);

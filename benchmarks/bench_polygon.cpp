@@ -93,35 +93,23 @@ void BM_library(benchmark::State& state) {
     });
 }
 
-// Cost of each step of the library's path, cumulatively: (1) M^-1 p and normalization of the 4
-// vertices; (2) plus the streaming horizon clip (edges folded with a trivial a.z + b.z); the
-// full path with each policy adds the edge terms.
-void BM_step_transform_normalize(benchmark::State& state) {
+// Cost of the steps of the library's quad path: everything but the fit of theta / sin(theta),
+// with a policy whose factor is 1 (transform, clip, normalization, the edges' cosines and cross
+// products, the branch on the sign of the cosine), against the full path with each policy.
+struct unit_factor {
+    template <typename T>
+    static T positive_branch(T) { return T(1); }
+    template <typename T>
+    static T theta_over_sin(T, const glm::vec<3, T>&) { return T(1); }
+};
+
+void BM_step_without_fit(benchmark::State& state) {
     const auto& cs = typed_configs<float>();
     std::size_t i = 0;
-    for (auto _ : state) {
-        const auto& c = cs[i++ & 4095];
-        const ltc::detail::transformed_vertices<float> at{c.m_inv, c.quad};
-        glm::vec3 sum(0.0f);
-        for (std::size_t k = 0; k < 4; ++k) sum += at(k);
-        benchmark::DoNotOptimize(sum);
-    }
+    for (auto _ : state) benchmark::DoNotOptimize(library<float, unit_factor>(cs[i++ & 4095]));
 }
 
-void BM_step_transform_normalize_clip(benchmark::State& state) {
-    const auto& cs = typed_configs<float>();
-    std::size_t i = 0;
-    for (auto _ : state) {
-        const auto& c = cs[i++ & 4095];
-        float sum = 0;
-        ltc::detail::for_each_unit_edge<float, true>(
-            ltc::detail::transformed_vertices<float>{c.m_inv, c.quad}, 4,
-            [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3&) { sum += a.z + b.z; });
-        benchmark::DoNotOptimize(sum);
-    }
-}
-
-// (3) the edge terms alone, on the 4 edges of the transformed quads' unit vertices (unclipped,
+// The edge terms alone, on the 4 edges of the transformed quads' unit vertices (unclipped,
 // precomputed): the reference shader's integrate_edge_vec against each policy's edge_integral_z.
 const std::vector<std::array<glm::vec3, 4>>& unit_quads() {
     static const std::vector<std::array<glm::vec3, 4>> all = [] {
@@ -207,8 +195,7 @@ BENCHMARK_TEMPLATE(BM_clipless, float, ltc::clipless::method::table, ltc::edge_p
 BENCHMARK_TEMPLATE(BM_ggx_shading, float);
 BENCHMARK_TEMPLATE(BM_ggx_shading, double);
 BENCHMARK(BM_reference_shader);
-BENCHMARK(BM_step_transform_normalize);
-BENCHMARK(BM_step_transform_normalize_clip);
+BENCHMARK(BM_step_without_fit);
 BENCHMARK(BM_step_edges_reference);
 BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::polynomial);

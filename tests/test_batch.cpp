@@ -156,6 +156,7 @@ items random_items(std::size_t n, std::size_t count, std::uint64_t seed, bool co
 }  // namespace
 
 TEMPLATE_TEST_CASE("batch quads match the scalar path", "[batch]", ltc::edge_policy::polynomial,
+                   ltc::edge_policy::minimax_rational,
                    ltc::edge_policy::rational, ltc::edge_policy::fp16_quadratic, ltc::edge_policy::exact) {
     using Policy = TestType;
     const std::size_t count = 4099;  // not a multiple of any vector width: the epilogue runs

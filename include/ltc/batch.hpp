@@ -11,7 +11,8 @@
 // up to rounding: the clamped-cosine integral of M^-1 P, clipped to the horizon (eq. 11).
 //
 // How it differs from the scalar path (polygon.hpp), and why the results agree:
-//   - The streaming Sutherland-Hodgman clipper emits a variable number of vertices. Here each
+//   - The scalar path's clippers (the streaming Sutherland-Hodgman clipper, and for quads a switch
+//     on the vertices above the horizon) emit a variable number of vertices. Here each
 //     edge p -> q becomes, with X its (unit) horizon crossing, the segment
 //     [p_in ? p : X, q_in ? q : X], masked by p_in || q_in; the clipped polygon's edges along the
 //     horizon, from an exit E to the next entry R, are added when R is met (paired with the last
@@ -32,11 +33,12 @@
 //     vertex with |M^-1 p|^2 outside (1e-30, 1e30) (a vertex at the origin, tiny, huge or
 //     non-finite vertices: rescaling and the origin test live in the scalar path), a horizon
 //     crossing direction with |x|^2 <= 1e-30 (an edge through, or within 1e-15 of, the shading
-//     point), and, for the polynomial policy, a nearly antipodal edge with |a x b|^2 <= 1e-30.
+//     point), and, for the polynomial and minimax_rational policies, a nearly antipodal edge with
+//     |a x b|^2 <= 1e-30.
 //     Such items are rare in rendering; a batch made only of them runs at the scalar speed.
 //
-// Policies: polynomial (default), rational and fp16_quadratic are evaluated branch-free and
-// vectorize. edge_policy::exact needs atan2, which GCC does not vectorize without -ffast-math
+// Policies: polynomial (default), minimax_rational, rational and fp16_quadratic are evaluated
+// branch-free and vectorize. edge_policy::exact needs atan2, which GCC does not vectorize without -ffast-math
 // and a vector math library: the batch API accepts it and returns the same values, but its loop
 // stays scalar. Any other policy is called through Policy::theta_over_sin (scalar unless the
 // compiler manages to if-convert it).
@@ -176,12 +178,13 @@ LTC_BATCH_INLINE T rsqrt(T x) {
 
 /// theta / sin(theta) of the edge policy, from c = cos(theta), s2 = |a x b|^2 and a x b, without
 /// branches for the library's approximate policies. Sets `fallback` where the scalar path must
-/// take over (polynomial: c < 0 with |a x b|^2 <= 1e-30).
+/// take over (polynomial, minimax_rational: c < 0 with |a x b|^2 <= 1e-30).
 template <typename Policy, typename T>
 LTC_BATCH_INLINE T theta_over_sin(T c, T s2, T cx, T cy, T cz, bool& fallback) {
-    if constexpr (std::is_same_v<Policy, edge_policy::polynomial>) {
-        // The scalar policy's own polynomial, in the same order.
-        const T p = edge_policy::polynomial::positive_branch(T(1) - std::abs(c));
+    if constexpr (std::is_same_v<Policy, edge_policy::polynomial> ||
+                  std::is_same_v<Policy, edge_policy::minimax_rational>) {
+        // The scalar policy's own fit, in the same order (its division vectorizes).
+        const T p = Policy::positive_branch(T(1) - std::abs(c));
         const bool pos = c >= T(0);
         fallback = !pos & !(s2 > T(1e-30));
         const T neg = pi<T>() * rsqrt(s2) - p;  // pi / s - p
