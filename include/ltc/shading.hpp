@@ -182,20 +182,20 @@ LTC_HOST_DEVICE inline glm::vec<3, T> rescaled(const glm::vec<3, T>& p) {
 }
 
 /// Streaming sum of edge_integral_z over a closed polygon given vertex by vertex (unit vectors).
-template <typename T>
+template <typename T, typename Policy = edge_policy::exact>
 struct edge_sum {
     glm::vec<3, T> first{T(0)}, prev{T(0)};
     bool started = false;
     T sum{0};
     LTC_HOST_DEVICE void push(const glm::vec<3, T>& q) {
         if (started)
-            sum += edge_integral_z(prev, q);
+            sum += edge_integral_z<Policy>(prev, q);
         else
             first = q, started = true;
         prev = q;
     }
     LTC_HOST_DEVICE void close() {
-        if (started) sum += edge_integral_z(prev, first);
+        if (started) sum += edge_integral_z<Policy>(prev, first);
     }
 };
 
@@ -255,18 +255,18 @@ struct tee_stage {
 /// space clip for the specular one. `clip_in_ltc_space = false` skips the second clip (the
 /// integral of the *unclamped* cosine over M^-1 of the clipped polygon: not D's integral, kept
 /// for measurements only).
-template <typename T, typename LocalAt>
+template <typename T, typename Policy = edge_policy::exact, typename LocalAt>
 LTC_HOST_DEVICE inline polygon_light_integrals<T> integrals_shading_first(const glm::mat<3, 3, T>& m_inv,
                                                                          const LocalAt& local_at, std::size_t n,
                                                                          bool clip_in_ltc_space = true) {
     polygon_light_integrals<T> r;
     if (n < 3) return r;
-    edge_sum<T> diffuse, specular;
-    clip_stage<T, edge_sum<T>> ltc_clip{specular};
+    edge_sum<T, Policy> diffuse, specular;
+    clip_stage<T, edge_sum<T, Policy>> ltc_clip{specular};
     bool ok = true;
     const auto run = [&](auto& spec_in) {
         transform_stage<T, std::remove_reference_t<decltype(spec_in)>> to_ltc{m_inv, spec_in};
-        tee_stage<T, edge_sum<T>, decltype(to_ltc)> both{diffuse, to_ltc};
+        tee_stage<T, edge_sum<T, Policy>, decltype(to_ltc)> both{diffuse, to_ltc};
         clip_stage<T, decltype(both)> local_clip{both};
         for (std::size_t i = 0; i < n; ++i) {
             const glm::vec<3, T> u = safe_normalize(local_at(i));
@@ -290,8 +290,9 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrals_shading_first(const 
 
 /// The signed integrals (form factor E and LTC integral I_ltc) of the world-space polygon
 /// vertices[0..n) seen from P in `frame`, for the LTC whose inverse matrix in the local frame
-/// is m_inv (any scale, any sign of determinant).
-template <typename T>
+/// is m_inv (any scale, any sign of determinant). Policy evaluates the edge terms (edge_policy;
+/// exact by default, minimax_rational for speed at float accuracy).
+template <typename Policy = edge_policy::exact, typename T>
 LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
     const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T>& P,
     const glm::vec<3, T>* vertices, std::size_t n, horizon_clipping clip = horizon_clipping::ltc_space) {
@@ -304,7 +305,7 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
     const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertices[i]) - P)); };
     switch (clip) {
         case horizon_clipping::shading_first:
-            return detail::integrals_shading_first<T>(m_inv, local_at, n, true);
+            return detail::integrals_shading_first<T, Policy>(m_inv, local_at, n, true);
         case horizon_clipping::sphere_analytic:
         case horizon_clipping::sphere_table: {
             const clipless::method how =
@@ -315,15 +316,23 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
             const clipless::sphere_table* table =
                 how == clipless::method::table ? &clipless::sphere_table::instance() : nullptr;
 #endif
-            r.form_factor = clipless::detail::integrate_signed<T, edge_policy::exact>(glm::mat<3, 3, T>(T(1)), T(1), local_raw, n, how, table);
-            r.ltc = clipless::detail::integrate_signed<T, edge_policy::exact>(m_inv, glm::determinant(m_inv), local_raw, n, how, table);
+            r.form_factor = clipless::detail::integrate_signed<T, Policy>(glm::mat<3, 3, T>(T(1)), T(1), local_raw, n, how, table);
+            r.ltc = clipless::detail::integrate_signed<T, Policy>(m_inv, glm::determinant(m_inv), local_raw, n, how, table);
             return r;
         }
         case horizon_clipping::ltc_space:
         default: {
-            r.form_factor = clamped_cosine<T>::signed_integral(local_at, n);
-            const auto ltc_at = [&](std::size_t i) { return m_inv * local_at(i); };
-            const T s = clamped_cosine<T>::signed_integral(ltc_at, n);
+            // Every edge policy but exact assumes unit vertices.
+            const auto unit = [](const vec3& p) {
+                if constexpr (std::is_same_v<Policy, edge_policy::exact>)
+                    return p;
+                else
+                    return detail::safe_normalize(p);
+            };
+            const auto local_unit = [&](std::size_t i) { return unit(local_at(i)); };
+            const auto ltc_at = [&](std::size_t i) { return unit(m_inv * local_at(i)); };
+            r.form_factor = clamped_cosine<T, Policy>::signed_integral(local_unit, n);
+            const T s = clamped_cosine<T, Policy>::signed_integral(ltc_at, n);
             r.ltc = glm::determinant(m_inv) < T(0) ? -s : s;
             return r;
         }
@@ -332,13 +341,13 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
 
 /// Shading with explicit LTC coefficients (m_inv in the local frame of `frame`, magnitude,
 /// fresnel; e.g. from ltc::ltc_table::fetch(frame.cos_theta_v, roughness)).
-template <typename T>
+template <typename Policy = edge_policy::exact, typename T>
 LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
     const shading_frame<T>& frame, const ltc_coefficients<T>& lobe, const glm::vec<3, T>& P,
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
     horizon_clipping clip = horizon_clipping::ltc_space) {
-    const polygon_light_integrals<T> I = integrate_polygon_light(frame, lobe.m_inv, P, vertices, n, clip);
+    const polygon_light_integrals<T> I = integrate_polygon_light<Policy>(frame, lobe.m_inv, P, vertices, n, clip);
     polygon_light_result<T> r;
     const glm::vec<3, T> brdf_scale = F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel;
     r.specular = radiance * brdf_scale * apply_sidedness(I.ltc, side);
@@ -348,14 +357,14 @@ LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
 
 /// Shading with the library's GGX table: cos theta_v from N and V, the coefficients from
 /// ltc::ggx::fetch(cos theta_v, roughness) (alpha = roughness^2).
-template <typename T>
+template <typename Policy = edge_policy::exact, typename T>
 inline polygon_light_result<T> shade_polygon_light(const glm::vec<3, T>& P, const glm::vec<3, T>& N,
                                                    const glm::vec<3, T>& V, T roughness, const glm::vec<3, T>& F0,
                                                    const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
                                                    const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
                                                    horizon_clipping clip = horizon_clipping::ltc_space) {
     const shading_frame<T> frame = make_shading_frame(N, V);
-    return shade_polygon_light(frame, ggx::fetch<T>(frame.cos_theta_v, roughness), P, F0, albedo, radiance, vertices,
+    return shade_polygon_light<Policy>(frame, ggx::fetch<T>(frame.cos_theta_v, roughness), P, F0, albedo, radiance, vertices,
                                n, side, clip);
 }
 
