@@ -113,3 +113,16 @@ TEST_CASE("quad fast path hands degenerate quads to the general path", "[polygon
         CHECK(((std::isnan(qn) && std::isnan(gn)) || qn == gn));
     }
 }
+
+TEST_CASE("quad fast path: M^-1 p overflowing to NaN does not pass for a quad below the horizon", "[polygon][quad]") {
+    // M^-1 p0 = (3e38, 0, 2e38) is above the horizon, but its z, 2 * 3e38 - 2 * 2e38, overflows
+    // to inf - inf = NaN in float: NaN counts as below, and the other vertices are below. The
+    // general path rescales p0 by a power of two first and sees it above.
+    const glm::mat3 mi = glm::transpose(glm::mat3(1, 0, 0, 0, 0, 1, 2, -2, 0));
+    const std::vector<glm::vec3> quad = {{3e38f, 2e38f, 0}, {0, 1, 0}, {1, 2, 1}, {0, 1, 1}};
+    const auto s = ltc::sidedness::two_sided;
+    const float general = general_value<ltc::edge_policy::minimax_rational>(mi, quad, s);
+    CHECK(general > 0.0f);
+    CHECK(quad_value<ltc::edge_policy::minimax_rational>(mi, quad, s) == general);
+    CHECK(quad_value<ltc::edge_policy::exact>(mi, quad, s) == general_value<ltc::edge_policy::exact>(mi, quad, s));
+}

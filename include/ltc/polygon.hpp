@@ -241,8 +241,8 @@ struct polynomial {
 /// A (3, 2) rational function of y = 1 - c, the relative-error minimax fit of
 /// f(c) = acos(c) / sqrt(1 - c^2) on c in [0, 1] (linearized Loeb iteration on 400 Chebyshev
 /// points, checked on 4001 points: 4.1e-8 in exact arithmetic, below float's half ulp of 6e-8),
-/// extended to c < 0 by f(c) = pi / s - f(-c). Six multiply-adds and one division per edge,
-/// against the degree-9 polynomial's nine multiply-adds and three products: the fastest
+/// extended to c < 0 by f(c) = pi / s - f(-c). Five multiply-adds and one division per edge,
+/// against the degree-9 polynomial's nine multiply-adds and two products: the fastest
 /// float-accurate policy.
 struct minimax_rational {
     template <typename T>
@@ -436,14 +436,16 @@ LTC_HOST_DEVICE LTC_INLINE bool in_range_all(T first, Ts... rest) {
 /// The clamped-cosine edge sum (times 2 pi) of a quad, the common light shape, along the lines of
 /// the reference shader: the quad is clipped before normalization by a switch on which vertices
 /// are above the horizon, the clipped polygon (3 to 5 vertices) is padded to 5 with repeats of
-/// its first vertex (a zero-length edge adds exactly 0 with every policy), and 5 edge terms are
+/// its first vertex (a zero-length edge adds exactly 0 with the library's policies), and 5 edge
+/// terms are
 /// summed without a branch on the vertex count. Returns false, for form_factor to take the
-/// general path, where that path's special cases arise: a vertex of the clipped polygon with |p|^2
-/// outside (1e-30, 1e30) (at the origin, tiny, huge or not finite; also, harmlessly, five whose
-/// |p|^2 sum to 1e30 or more), a non-finite vertex anywhere, a horizon crossing within 1e-15 of
-/// the shading point,
-/// or two separate runs of vertices above the horizon (only a non-convex quad has them).
-/// Vertices on the plane z = 0 count as above, as in clip_to_horizon.
+/// general path, where that path's special cases arise: a vertex of the clipped polygon, or an
+/// unnormalized horizon crossing, with |p|^2 outside (1e-30, 1e30) (a vertex at the origin, tiny,
+/// huge or not finite, an edge through or near the shading point; also, harmlessly, quads of
+/// |M^-1 p| beyond about 1e-7 or 1e7, whose crossings' squared lengths scale as |M^-1 p|^4, and
+/// five vertices whose |p|^2 sum to 1e30 or more), a non-finite vertex anywhere, or two separate
+/// runs of vertices above the horizon (only a non-convex quad has them). Vertices on the plane
+/// z = 0 count as above, as in clip_to_horizon.
 template <typename T, typename Policy, typename Vertices>
 LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
     using vec3 = glm::vec<3, T>;
@@ -455,7 +457,9 @@ LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
     }
     if (above == 5u || above == 10u) return false;
     sum = T(0);
-    if (above == 0u) return true;
+    // All below: 0, unless a vertex is not finite (M^-1 p may overflow to NaN, which counts as
+    // below, where the general path's rescaled M^-1 p is above): the general path decides then.
+    if (above == 0u) return is_finite(q[0]) && is_finite(q[1]) && is_finite(q[2]) && is_finite(q[3]);
     // X(i, j): where the edge between q_i (above) and q_j (below) meets the horizon.
     const auto X = [&](unsigned i, unsigned j) { return horizon_crossing_direction(q[i], q[j]); };
     // Clipped in place, in the quad's cyclic order (up to a rotation): the vertices above stay,
@@ -503,8 +507,9 @@ LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
     }
     const vec3* w = q;
     // Only the clipped polygon's vertices need the range test: the vertices above are among them,
-    // and a vertex below enters through a crossing, which is out of range (or NaN) when the vertex
-    // is huge, tiny or not finite. A vertex at the origin has z = 0 and counts as above.
+    // a vertex below that is not finite makes its crossing NaN or infinite (or is the opposite
+    // vertex, tested above), and a vertex at the origin has z = 0 and counts as above. A finite
+    // vertex below of extreme size still gives an accurate crossing direction.
     T l2[5];
     for (unsigned i = 0; i < 5; ++i) l2[i] = glm::dot(w[i], w[i]);
     if (!in_range_all(l2[0], l2[1], l2[2], l2[3], l2[4])) return false;

@@ -322,15 +322,9 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
         }
         case horizon_clipping::ltc_space:
         default: {
-            // Every edge policy but exact assumes unit vertices.
-            const auto unit = [](const vec3& p) {
-                if constexpr (std::is_same_v<Policy, edge_policy::exact>)
-                    return p;
-                else
-                    return detail::safe_normalize(p);
-            };
-            const auto local_unit = [&](std::size_t i) { return unit(local_at(i)); };
-            const auto ltc_at = [&](std::size_t i) { return unit(m_inv * local_at(i)); };
+            // The edge terms take unit vertices (M^-1 of any scale may leave M^-1 p far from it).
+            const auto local_unit = [&](std::size_t i) { return detail::safe_normalize(local_at(i)); };
+            const auto ltc_at = [&](std::size_t i) { return detail::safe_normalize(m_inv * local_at(i)); };
             r.form_factor = clamped_cosine<T, Policy>::signed_integral(local_unit, n);
             const T s = clamped_cosine<T, Policy>::signed_integral(ltc_at, n);
             r.ltc = glm::determinant(m_inv) < T(0) ? -s : s;
