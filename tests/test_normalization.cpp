@@ -14,6 +14,7 @@
 // of the 2-norm condition number; see frobenius_condition) and the standard model
 // fl(a op b) = (a op b)(1 + d), |d| <= u, gamma_n = n u / (1 - n u) ~ n u (Higham, "Accuracy and
 // Stability of Numerical Algorithms", 2nd ed., ch. 2-3).
+#include "support/original_distributions.hpp"
 #include "support/rng.hpp"
 #include "support/sphere_quadrature.hpp"
 
@@ -93,10 +94,7 @@ double dist_max() {
 // Sum: (21 + 10 + 84) kappa_F u + 19 u <= 122 kappa_F u <= 64 eps kappa_F (kappa_F >= 3). The
 // double summation of the rule adds < 1e-13 (two-level sum of <= 256 + 1024 terms).
 TEMPLATE_TEST_CASE("normalization: D integrates to 1 over the sphere (transformed-space quadrature)",
-                   "[normalization][quadrature]", ltc::uniform_sphere<float>, ltc::uniform_sphere<double>,
-                   ltc::uniform_hemisphere<float>, ltc::uniform_hemisphere<double>, ltc::clamped_cosine<float>,
-                   ltc::clamped_cosine<double>, ltc::squared_clamped_cosine<float>,
-                   ltc::squared_clamped_cosine<double>) {
+                   "[normalization][quadrature]", LTC_ORIGINAL_DISTRIBUTIONS) {
     using Dist = TestType;
     using T = typename Dist::scalar;
     for (const named_matrix& nm : ltc_test::test_matrices()) {
@@ -146,9 +144,7 @@ TEMPLATE_TEST_CASE("normalization: D integrates to 1 over the sphere (transforme
 // the horizon has <= 6 edges: 6 faces x 6 edges x 22 u < 800 u = 400 eps (the six face values are
 // then added in double).
 TEMPLATE_TEST_CASE("normalization: the six cube faces integrate to 1 (closed form)", "[normalization][closed-form]",
-                   ltc::uniform_sphere<float>, ltc::uniform_sphere<double>, ltc::uniform_hemisphere<float>,
-                   ltc::uniform_hemisphere<double>, ltc::clamped_cosine<float>, ltc::clamped_cosine<double>,
-                   ltc::squared_clamped_cosine<float>, ltc::squared_clamped_cosine<double>) {
+                   LTC_ORIGINAL_DISTRIBUTIONS) {
     using Dist = TestType;
     using T = typename Dist::scalar;
     const ltc_test::cube_map faces{1};
@@ -205,9 +201,7 @@ TEMPLATE_TEST_CASE("normalization: the six cube faces integrate to 1 (closed for
 // at (M^-1 w).z = 0 is excluded: directions whose |z_o| < 8 eps (where the two normalizations
 // may disagree on the side) are skipped.
 TEMPLATE_TEST_CASE("normalization: eval(w) == jacobian(w) * D_o(normalize(M^-1 w))", "[normalization][jacobian]",
-                   ltc::uniform_sphere<float>, ltc::uniform_sphere<double>, ltc::uniform_hemisphere<float>,
-                   ltc::uniform_hemisphere<double>, ltc::clamped_cosine<float>, ltc::clamped_cosine<double>,
-                   ltc::squared_clamped_cosine<float>, ltc::squared_clamped_cosine<double>) {
+                   LTC_ORIGINAL_DISTRIBUTIONS) {
     using Dist = TestType;
     using T = typename Dist::scalar;
     using vec3 = glm::vec<3, T>;

@@ -11,6 +11,7 @@
 //       with non-zero pdf. (The library's inversions: cos(theta) = 1 - 2 u.x (sphere), 1 - u.x
 //       (hemisphere), sqrt(1 - u.x) (cosine), cbrt(1 - u.x) (squared cosine); phi = 2 pi u.y.)
 // Every random sequence has a fixed seed (ltc_test::rng), so the tests are deterministic.
+#include "support/original_distributions.hpp"
 #include "support/rng.hpp"
 #include "support/sphere_quadrature.hpp"
 
@@ -122,10 +123,7 @@ double chi_square_critical_1e4(int nu) {
 // separately (each with <= 3u: 1 - u.x or cbrt, sqrt, products) and cos, sin of phi (u each):
 // | |w| - 1 | <= 3u + 3u + u + u = 8u. Checked: <= 4 eps = 8u (|w| computed in double).
 TEMPLATE_TEST_CASE("sampling: moments of the samples match the quadrature moments; samples are unit with pdf > 0",
-                   "[sampling][moments]", ltc::uniform_sphere<float>, ltc::uniform_sphere<double>,
-                   ltc::uniform_hemisphere<float>, ltc::uniform_hemisphere<double>, ltc::clamped_cosine<float>,
-                   ltc::clamped_cosine<double>, ltc::squared_clamped_cosine<float>,
-                   ltc::squared_clamped_cosine<double>) {
+                   "[sampling][moments]", LTC_ORIGINAL_DISTRIBUTIONS) {
     using Dist = TestType;
     using T = typename Dist::scalar;
     constexpr int N = 1 << 18;
@@ -200,10 +198,7 @@ TEMPLATE_TEST_CASE("sampling: moments of the samples match the quadrature moment
 // arithmetic of each edge term counts, <= 22 u per edge of a cell; 384 cells x 6 edges x 22 u
 // < 51000 u = 25500 eps (5.7e-12 in double).
 TEMPLATE_TEST_CASE("sampling: chi-square test of the samples against exact cube-map cell probabilities",
-                   "[sampling][chi-square]", ltc::uniform_sphere<float>, ltc::uniform_sphere<double>,
-                   ltc::uniform_hemisphere<float>, ltc::uniform_hemisphere<double>, ltc::clamped_cosine<float>,
-                   ltc::clamped_cosine<double>, ltc::squared_clamped_cosine<float>,
-                   ltc::squared_clamped_cosine<double>) {
+                   "[sampling][chi-square]", LTC_ORIGINAL_DISTRIBUTIONS) {
     using Dist = TestType;
     using T = typename Dist::scalar;
     constexpr int N = 1 << 18;
@@ -265,10 +260,7 @@ TEMPLATE_TEST_CASE("sampling: chi-square test of the samples against exact cube-
 // uniform hemisphere: down to eps / 2), and the round trip w = M w_o / |M w_o| -> M^-1 w must
 // still land on the positive side for pdf(w) > 0.
 TEMPLATE_TEST_CASE("sampling: u = (0, 0) and u next to 1 give finite unit directions with pdf > 0",
-                   "[sampling][edge-cases]", ltc::uniform_sphere<float>, ltc::uniform_sphere<double>,
-                   ltc::uniform_hemisphere<float>, ltc::uniform_hemisphere<double>, ltc::clamped_cosine<float>,
-                   ltc::clamped_cosine<double>, ltc::squared_clamped_cosine<float>,
-                   ltc::squared_clamped_cosine<double>) {
+                   "[sampling][edge-cases]", LTC_ORIGINAL_DISTRIBUTIONS) {
     using Dist = TestType;
     using T = typename Dist::scalar;
     using vec2 = glm::vec<2, T>;
