@@ -1,7 +1,9 @@
-// Deterministic random numbers for tests: SplitMix64 (Steele, Lea, Flood 2014), with doubles in
-// [0, 1) from the top 53 bits. Unlike std::uniform_real_distribution, the sequence is the same
-// on every standard library, so a fixed seed gives the same test on every machine.
+// Deterministic random numbers for tests: the library's SplitMix64 (ltc/ground_truth.hpp), with
+// doubles in [0, 1) from the top 53 bits. Unlike std::uniform_real_distribution, the sequence is
+// the same on every standard library, so a fixed seed gives the same test on every machine.
 #pragma once
+
+#include <ltc/ground_truth.hpp>
 
 #include <glm/glm.hpp>
 
@@ -14,16 +16,11 @@ namespace ltc_test {
 
 class rng {
   public:
-    explicit rng(std::uint64_t seed) : state_(seed) {}
+    explicit rng(std::uint64_t seed) : generator_(seed) {}
 
-    std::uint64_t next_u64() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
+    std::uint64_t next_u64() { return generator_.next(); }
     /// Uniform in [0, 1).
-    double uniform() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53; }
+    double uniform() { return generator_.uniform(); }
     double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
     /// Uniform in [0, 1)^2, in the scalar type of the sampler under test (a float made from a
     /// double in [0, 1) can round up to 1: clamp to the largest float below 1).
@@ -49,7 +46,7 @@ class rng {
         const T t = static_cast<T>(u);
         return t < T(1) ? t : T(1) - std::numeric_limits<T>::epsilon() / 2;
     }
-    std::uint64_t state_;
+    ltc::ground_truth::splitmix64 generator_;
 };
 
 }  // namespace ltc_test
