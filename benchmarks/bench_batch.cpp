@@ -4,8 +4,9 @@
 // reports items/s (SetItemsProcessed), plus, as counters, the maximum absolute and relative error
 // against the library's double-precision exact closed form.
 //
-// Built twice by CMake: bench_batch (the default target, SSE2 on x86-64) and, where the compiler
-// supports it, bench_batch_avx2 (-march=x86-64-v3: AVX2 + FMA), which exits without running when
+// Built three times by CMake: bench_batch (the default target, SSE2 on x86-64) and, where the
+// compiler supports it, bench_batch_avx2 (-march=x86-64-v3: AVX2 + FMA) and
+// bench_batch_avx2_no_math_errno (the same with -fno-math-errno), which exit without running when
 // the CPU lacks AVX2 or FMA. Run them with --benchmark_repetitions=5 and compare medians; the
 // throughput ratio batch / reference is meaningful within one executable (both sides are compiled
 // with the same flags).

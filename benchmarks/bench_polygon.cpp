@@ -73,6 +73,23 @@ void BM_reference_shader(benchmark::State& state) {
         for (int k = 0; k < 4; ++k) q[k] = glm::vec3(c.quad[k]);
         return static_cast<double>(reference_shader::ltc_evaluate(glm::mat3(c.m_inv), q, true));
     });
+    // What the configurations ask of a clipper (float, as evaluated): the share of quads crossing
+    // the horizon, and the clipped edges, of which those with a negative cosine.
+    double crossing = 0, edges = 0, negative = 0;
+    for (const auto& c : typed_configs<float>()) {
+        int above = 0;
+        for (const auto& p : c.quad) above += (c.m_inv * p).z >= 0.0f ? 1 : 0;
+        crossing += above > 0 && above < 4 ? 1 : 0;
+        ltc::detail::for_each_unit_edge<float, true>(
+            ltc::detail::transformed_vertices<float>{c.m_inv, c.quad}, 4,
+            [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3&) {
+                edges += 1;
+                negative += glm::dot(a, b) < 0.0f ? 1 : 0;
+            });
+    }
+    state.counters["crossing_quads"] = crossing / 4096;
+    state.counters["clipped_edges"] = edges;
+    state.counters["negative_cosine_edges"] = negative;
 }
 
 template <typename T, typename Policy>

@@ -60,7 +60,7 @@ TEMPLATE_TEST_CASE("edge_policy::exact is correct to a few ulps at every angle",
 
 TEMPLATE_TEST_CASE("edge_policy::polynomial is accurate to float rounding", "[edge-policy]", float, double) {
     // Interpolation error of the degree-9 Chebyshev interpolant: 1.29e-8 (in exact arithmetic,
-    // measured on a 20001-point grid when fitting); Horner in y = 1 - c with coefficients of size
+    // measured on a 20001-point grid when fitting); Estrin in y = 1 - c with coefficients of size
     // <= 1 adds a few u; pi / s - p for c < 0 adds 2 u more. Beats the 3e-6 of published 6-term
     // engine fits by two orders of magnitude in double.
     check_fit<ltc::edge_policy::polynomial, TestType>(1.3e-8, 8, 100);
@@ -116,7 +116,7 @@ TEMPLATE_TEST_CASE("edge policies agree on polygon integrals within their factor
     // |sum of edge terms| <= sum |theta_i| |n_i.z| / (2 pi) <= n pi / (2 pi): a relative factor
     // error r changes the result by at most r * n / 2 in absolute value.
     CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::polynomial>(quad, 4) - exact) <= (1.3e-8 + 16 * u<T>()) * 2);
-    CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::minimax_rational>(quad, 4) - exact) <= (4.1e-8 + 41 * u<T>()) * 2);
+    CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::minimax_rational>(quad, 4) - exact) <= (4.1e-8 + (41 + 8) * u<T>()) * 2);
     CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::rational>(quad, 4) - exact) <= (5e-5 + 16 * u<T>()) * 2);
     CHECK(std::abs(ltc::form_factor_signed<ltc::edge_policy::fp16_quadratic>(quad, 4) - exact) <= 0.0116 * 2);
     const vec3 f = ltc::vector_form_factor<ltc::edge_policy::polynomial>(quad, 4);

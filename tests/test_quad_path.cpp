@@ -7,9 +7,9 @@
 // Tolerance: the two paths normalize the same M^-1 p identically; they differ in the horizon
 // crossings (from the raw vertices here, from the unit vertices there: the same cancellation
 // kappa_X amplifies the rounding of either) and in the order of summation (5 terms against m).
-// Both are within ltc_test::clip_tolerance, derived for the batch API, which also differs in the
-// normalization. Where the quad path hands over to the general path (non-convex quads with two
-// runs above the horizon, vertices at the origin, tiny or huge), the results are bitwise equal.
+// Both are bounded by ltc_test::clip_tolerance with same_normalization. Where the quad path hands
+// over to the general path (non-convex quads with two runs above the horizon, vertices at the
+// origin, tiny or huge), the results are bitwise equal.
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"
 
@@ -75,7 +75,7 @@ TEMPLATE_TEST_CASE("quad fast path matches the general path, for every set of ve
                 handed_over_unequal += a != b;
                 continue;
             }
-            const double err = std::abs(static_cast<double>(a) - b), tol = ltc_test::clip_tolerance<Policy>(mi, quad);
+            const double err = std::abs(static_cast<double>(a) - b), tol = ltc_test::clip_tolerance<Policy>(mi, quad, true);
             violations += !(err <= tol);
             if (err > 0) worst_ratio = std::max(worst_ratio, err / tol);
         }
@@ -107,7 +107,7 @@ TEST_CASE("quad fast path hands degenerate quads to the general path", "[polygon
         CHECK(quad_value<Policy>(mi, huge, s) == general_value<Policy>(mi, huge, s));
         // And the same value as the unscaled quad, up to the paths' difference.
         CHECK(std::abs(quad_value<Policy>(mi, huge, s) - quad_value<Policy>(mi, quad, s)) <=
-              ltc_test::clip_tolerance<Policy>(mi, quad));
+              ltc_test::clip_tolerance<Policy>(mi, quad));  // p * 1e20 rounds: other unit vertices
         // NaN input: the general path's answer, whatever it is, bitwise (both NaN or both equal).
         const float qn = quad_value<Policy>(mi, nan, s), gn = general_value<Policy>(mi, nan, s);
         CHECK(((std::isnan(qn) && std::isnan(gn)) || qn == gn));

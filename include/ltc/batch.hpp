@@ -37,8 +37,8 @@
 //     |a x b|^2 <= 1e-30.
 //     Such items are rare in rendering; a batch made only of them runs at the scalar speed.
 //
-// Policies: polynomial (default), minimax_rational, rational and fp16_quadratic are evaluated
-// branch-free and vectorize. edge_policy::exact needs atan2, which GCC does not vectorize without -ffast-math
+// Policies: polynomial (default), minimax_rational and rational are evaluated branch-free and
+// vectorize, and so is fp16_quadratic in float. edge_policy::exact needs atan2, which GCC does not vectorize without -ffast-math
 // and a vector math library: the batch API accepts it and returns the same values, but its loop
 // stays scalar. Any other policy is called through Policy::theta_over_sin (scalar unless the
 // compiler manages to if-convert it).
@@ -115,12 +115,8 @@ struct ngon_soa {
 
 namespace detail {
 
-// The loop bodies must be inlined whole into the loops over items, or nothing vectorizes.
-#if defined(__GNUC__)
-#define LTC_BATCH_INLINE inline __attribute__((always_inline))
-#else
-#define LTC_BATCH_INLINE inline
-#endif
+// The loop bodies must be inlined whole into the loops over items, or nothing vectorizes:
+// every helper below is LTC_INLINE (config.hpp).
 
 /// Integer type of the width of T: flags live in it so that they share T's vector lanes.
 template <typename T>
@@ -131,7 +127,7 @@ using mask_t = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
 /// which it then refuses to if-convert (the default -ftrapping-math forbids speculating a
 /// floating-point operation), and the loop is not vectorized.
 template <typename T>
-LTC_BATCH_INLINE T select(bool c, T a, T b) {
+LTC_INLINE T select(bool c, T a, T b) {
     using U = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
     U ua, ub;
     std::memcpy(&ua, &a, sizeof ua);
@@ -149,7 +145,7 @@ LTC_BATCH_INLINE T select(bool c, T a, T b) {
 /// y (3/2 - x y^2 / 2), each squaring the error (1.7e-3, 4.3e-6, then float rounding: measured
 /// <= 2.2 ulps over [1e-30, 1e30]). Double takes one more.
 template <typename T>
-LTC_BATCH_INLINE T rsqrt(T x) {
+LTC_INLINE T rsqrt(T x) {
     static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>, "float or double");
 #if defined(__NO_MATH_ERRNO__)
     // Under -fno-math-errno (GCC and Clang define __NO_MATH_ERRNO__) std::sqrt vectorizes:
@@ -180,7 +176,7 @@ LTC_BATCH_INLINE T rsqrt(T x) {
 /// branches for the library's approximate policies. Sets `fallback` where the scalar path must
 /// take over (polynomial, minimax_rational: c < 0 with |a x b|^2 <= 1e-30).
 template <typename Policy, typename T>
-LTC_BATCH_INLINE T theta_over_sin(T c, T s2, T cx, T cy, T cz, bool& fallback) {
+LTC_INLINE T theta_over_sin(T c, T s2, T cx, T cy, T cz, bool& fallback) {
     if constexpr (std::is_same_v<Policy, edge_policy::polynomial> ||
                   std::is_same_v<Policy, edge_policy::minimax_rational>) {
         // The scalar policy's own fit, in the same order (its division vectorizes).
@@ -216,7 +212,7 @@ LTC_BATCH_INLINE T theta_over_sin(T c, T s2, T cx, T cy, T cz, bool& fallback) {
 
 /// z component of the edge term of unit vectors a -> b (edge_integral_z of polygon.hpp).
 template <typename Policy, typename T>
-LTC_BATCH_INLINE T edge_z(T ax, T ay, T az, T bx, T by, T bz, bool& fallback) {
+LTC_INLINE T edge_z(T ax, T ay, T az, T bx, T by, T bz, bool& fallback) {
     const T c = ax * bx + ay * by + az * bz;
     // stable_cross: a x (b - a) or a x (b + a); b + (-1) a is b - a exactly.
     const T sa = c >= T(0) ? T(-1) : T(1);
@@ -227,7 +223,7 @@ LTC_BATCH_INLINE T edge_z(T ax, T ay, T az, T bx, T by, T bz, bool& fallback) {
 
 /// The same for a -> b both on the horizon (z = 0): only a x b's z component is non-zero.
 template <typename Policy, typename T>
-LTC_BATCH_INLINE T horizon_edge_z(T ax, T ay, T bx, T by, bool& fallback) {
+LTC_INLINE T horizon_edge_z(T ax, T ay, T bx, T by, bool& fallback) {
     const T c = ax * bx + ay * by;
     const T sa = c >= T(0) ? T(-1) : T(1);
     const T dx = bx + sa * ax, dy = by + sa * ay;
@@ -239,18 +235,18 @@ LTC_BATCH_INLINE T horizon_edge_z(T ax, T ay, T bx, T by, bool& fallback) {
 template <typename T>
 struct per_item_matrix {
     const T* e[3][3];
-    LTC_BATCH_INLINE T at(int c, int r, std::size_t i) const { return e[c][r][i]; }
+    LTC_INLINE T at(int c, int r, std::size_t i) const { return e[c][r][i]; }
 };
 template <typename T>
 struct shared_matrix {
     T e[3][3];
-    LTC_BATCH_INLINE T at(int c, int r, std::size_t) const { return e[c][r]; }
+    LTC_INLINE T at(int c, int r, std::size_t) const { return e[c][r]; }
 };
 
 /// Unit vector of M^-1 p (transformed_vertices of transformed.hpp, fast path); flags an item whose
 /// |M^-1 p|^2 is outside the fast path's range (origin, tiny, huge, NaN).
 template <typename T, typename M>
-LTC_BATCH_INLINE void unit_vertex(const M& m, std::size_t i, T px, T py, T pz, T& ux, T& uy, T& uz, bool& fallback) {
+LTC_INLINE void unit_vertex(const M& m, std::size_t i, T px, T py, T pz, T& ux, T& uy, T& uz, bool& fallback) {
     // glm's mat3 * vec3, in its order of operations.
     const T qx = m.at(0, 0, i) * px + m.at(1, 0, i) * py + m.at(2, 0, i) * pz;
     const T qy = m.at(0, 1, i) * px + m.at(1, 1, i) * py + m.at(2, 1, i) * pz;
@@ -263,7 +259,7 @@ LTC_BATCH_INLINE void unit_vertex(const M& m, std::size_t i, T px, T py, T pz, T
 
 /// Sign of |M^-1| (transformed::from_inverse's determinant, in glm's order of operations).
 template <typename T, typename M>
-LTC_BATCH_INLINE bool negative_determinant(const M& m, std::size_t i) {
+LTC_INLINE bool negative_determinant(const M& m, std::size_t i) {
     const T c1x = m.at(1, 0, i), c1y = m.at(1, 1, i), c1z = m.at(1, 2, i);
     const T c2x = m.at(2, 0, i), c2y = m.at(2, 1, i), c2z = m.at(2, 2, i);
     const T kx = c1y * c2z - c2y * c1z, ky = c1z * c2x - c2z * c1x, kz = c1x * c2y - c2x * c1y;
@@ -287,7 +283,7 @@ struct walker {
     mask_t<T> entries;
 
     template <typename Policy>
-    LTC_BATCH_INLINE void edge(T qx, T qy, T qz) {
+    LTC_INLINE void edge(T qx, T qy, T qz) {
         const bool pin = pz >= T(0), qin = qz >= T(0);
         const bool crossing = pin != qin, entry = !pin & qin, exit = pin & !qin;
         // Crossing point: horizon_crossing_direction(in, out), normalized.
@@ -331,7 +327,7 @@ struct walker {
 
     /// The value of the item, or NaN where the scalar path must recompute it.
     template <typename Policy>
-    LTC_BATCH_INLINE T finish(bool negative_det, bool two_sided) {
+    LTC_INLINE T finish(bool negative_det, bool two_sided) {
         T total = sum;
         bool fb = fallback;
         if constexpr (S == 0) {
@@ -356,7 +352,7 @@ struct walker {
         return select(fb, std::numeric_limits<T>::quiet_NaN(), r);
     }
 
-    LTC_BATCH_INLINE void start(T ux, T uy, T uz) {
+    LTC_INLINE void start(T ux, T uy, T uz) {
         px = ux, py = uy, pz = uz;
         ex = ey = rx = ry = sum = T(0);
         has_exit = has_first = false;
@@ -366,7 +362,7 @@ struct walker {
 };
 
 template <typename Policy, typename T, std::size_t S, typename M>
-LTC_BATCH_INLINE void fixed_step(walker<T, S>& w, const M& m, std::size_t i, T px, T py, T pz) {
+LTC_INLINE void fixed_step(walker<T, S>& w, const M& m, std::size_t i, T px, T py, T pz) {
     T qx, qy, qz;
     unit_vertex(m, i, px, py, pz, qx, qy, qz, w.fallback);
     w.template edge<Policy>(qx, qy, qz);
@@ -555,4 +551,3 @@ void integrate_ngons(const ngon_soa<T>& in, T* out, std::size_t count, sidedness
 }  // namespace batch
 }  // namespace ltc
 
-#undef LTC_BATCH_INLINE

@@ -276,17 +276,6 @@ LTC_HOST_DEVICE inline T orientation(const VertexAt& at, std::size_t n) {
     return d > T(0) ? T(1) : (d < T(0) ? T(-1) : T(0));
 }
 
-/// Unclipped vector form factor of the polygon whose i-th vertex is at(i) (any callable).
-template <typename T, typename Policy, typename VertexAt>
-LTC_HOST_DEVICE inline glm::vec<3, T> vector_form_factor(const VertexAt& at, std::size_t n) {
-    glm::vec<3, T> f(T(0));
-    const bool ok = ltc::detail::for_each_unit_edge<T, false>(
-        at, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
-            f += edge_integral<Policy>(a, b);
-        });
-    return ok ? f / (T(2) * pi<T>()) : glm::vec<3, T>(T(0));
-}
-
 template <typename T>
 LTC_HOST_DEVICE inline equivalent_sphere<T> sphere_of(const glm::vec<3, T>& F, T facing) {
     const T len = glm::length(F);
@@ -308,7 +297,7 @@ LTC_HOST_DEVICE inline T integrate_signed(const glm::mat<3, 3, T>& m_inv, T det_
         // Unit vectors: every edge policy but exact assumes them.
         return s > T(0) ? ltc::detail::safe_normalize(m_inv * (p / s)) : vec3(T(0));
     };
-    const vec3 F = vector_form_factor<T, Policy>(transformed_at, n);
+    const vec3 F = ltc::detail::vector_form_factor<T, Policy>(transformed_at, n);
     const T facing_ltc = det_inv < T(0) ? -facing : facing;  // orientation of M^-1 P
     const equivalent_sphere<T> sph = sphere_of(F, facing_ltc);
     if (sph.sign == T(0)) return T(0);

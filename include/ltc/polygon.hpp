@@ -124,13 +124,14 @@ LTC_HOST_DEVICE LTC_INLINE void stream_unit_edges(const VertexAt& at, std::size_
     if (started) edge(last, first, first);
 }
 
+/// Largest vertex count of the small-polygon path below.
+inline constexpr std::size_t small_polygon = 8;
+
 /// for_each_unit_edge for polygons of n <= small_polygon vertices: the unit vertices are computed
 /// up front, on the stack, so that all normalizations are independent (they overlap in the
 /// pipeline), and the common cases, a polygon wholly above or wholly below the horizon, skip the
 /// clipper's per-vertex branches. The edges, their order and their values are those of the
 /// streaming path.
-inline constexpr std::size_t small_polygon = 8;
-
 template <typename T, bool clip, typename Vertices, typename EdgeFn>
 LTC_HOST_DEVICE LTC_INLINE bool for_each_small_unit_edge(const Vertices& vertices, std::size_t n, EdgeFn& edge) {
     using vec3 = glm::vec<3, T>;
@@ -356,18 +357,28 @@ LTC_HOST_DEVICE LTC_INLINE std::size_t clip_to_horizon(const glm::vec<3, T>* in,
     return m;
 }
 
+namespace detail {
+
+/// vector_form_factor for any Vertices (a pointer, or a callable i -> unit vector).
+template <typename T, typename Policy, typename Vertices>
+LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> vector_form_factor(const Vertices& v, std::size_t n) {
+    glm::vec<3, T> f(T(0));
+    const bool ok = for_each_unit_edge<T, false>(
+        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
+            f += edge_integral<Policy>(a, b);
+        });
+    return ok ? f / (T(2) * pi<T>()) : glm::vec<3, T>(T(0));
+}
+
+}  // namespace detail
+
 /// Vector form factor F = 1/(2 pi) sum_i edge_integral(p_i, p_i+1) of the unclipped polygon
 /// (eq. 11 before the dot with z; Snyder 1996 / Hill 2016). Its z component is the cosine
 /// integral without horizon clipping; |F| and its direction define the equivalent sphere of the
 /// horizon-clipping approximation.
 template <typename Policy = edge_policy::exact, typename T>
 LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> vector_form_factor(const glm::vec<3, T>* v, std::size_t n) {
-    glm::vec<3, T> f(T(0));
-    const bool ok = detail::for_each_unit_edge<T, false>(
-        v, n, [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
-            f += edge_integral<Policy>(a, b);
-        });
-    return ok ? f / (T(2) * pi<T>()) : glm::vec<3, T>(T(0));
+    return detail::vector_form_factor<T, Policy>(v, n);
 }
 
 namespace detail {
@@ -412,6 +423,20 @@ struct has_raw : std::false_type {};
 template <typename T, typename Vertices>
 struct has_raw<T, Vertices, std::void_t<decltype(std::declval<const Vertices&>().raw(std::size_t(0)))>>
     : std::true_type {};
+
+/// Vertices from a callable raw_at(i) returning directions of any scale: unit vectors for the
+/// general path, the raw directions for the quad path, which normalizes after clipping (so that
+/// neither normalizes twice).
+template <typename RawAt>
+struct directions {
+    RawAt raw_at;
+    LTC_HOST_DEVICE LTC_INLINE auto raw(std::size_t i) const { return raw_at(i); }
+    LTC_HOST_DEVICE LTC_INLINE auto operator()(std::size_t i) const { return safe_normalize(raw_at(i)); }
+};
+template <typename RawAt>
+LTC_HOST_DEVICE LTC_INLINE directions<RawAt> make_directions(const RawAt& raw_at) {
+    return {raw_at};
+}
 
 template <typename T, typename Vertices>
 LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> raw_vertex(const Vertices& v, std::size_t i) {
@@ -505,16 +530,15 @@ LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
         case 14u: q[4] = X(3, 0), q[0] = X(1, 0); break;  // [X10, V1, V2, V3, X30]
         default: q[4] = q[0]; break;                      // 15: [V0, V1, V2, V3]
     }
-    const vec3* w = q;
     // Only the clipped polygon's vertices need the range test: the vertices above are among them,
     // a vertex below that is not finite makes its crossing NaN or infinite (or is the opposite
     // vertex, tested above), and a vertex at the origin has z = 0 and counts as above. A finite
     // vertex below of extreme size still gives an accurate crossing direction.
     T l2[5];
-    for (unsigned i = 0; i < 5; ++i) l2[i] = glm::dot(w[i], w[i]);
+    for (unsigned i = 0; i < 5; ++i) l2[i] = glm::dot(q[i], q[i]);
     if (!in_range_all(l2[0], l2[1], l2[2], l2[3], l2[4])) return false;
     vec3 u[5];
-    for (unsigned i = 0; i < 5; ++i) u[i] = w[i] * (T(1) / std::sqrt(l2[i]));
+    for (unsigned i = 0; i < 5; ++i) u[i] = q[i] * (T(1) / std::sqrt(l2[i]));
     // Written out: GCC does not unroll a loop over 5 edges once the policy is inlined in it.
     sum = (edge_integral_z<Policy>(u[0], u[1]) + edge_integral_z<Policy>(u[1], u[2])) +
           (edge_integral_z<Policy>(u[2], u[3]) + edge_integral_z<Policy>(u[3], u[4])) +

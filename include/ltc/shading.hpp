@@ -14,7 +14,8 @@
 //   diffuse  = albedo * radiance * E(P)                        Lambert: albedo/pi int_P cos dw
 //   specular = radiance * (F0 magnitude + (1 - F0) fresnel) * I_ltc(P)
 //
-// with E the clipped form factor (paper eq. 11, exact) and I_ltc the integral of the LTC
+// with E the clipped form factor (paper eq. 11, with the chosen edge policy; in the sphere modes
+// the clipless approximation) and I_ltc the integral of the LTC
 // distribution over the polygon (eq. 3), its coefficients (M^-1, magnitude, fresnel) taken from
 // the GGX table at (cos theta_v, roughness). magnitude I_ltc approximates int_P rho cos (the
 // fit's error, measured by examples/ggx_error_report.cpp against ltc/ground_truth.hpp).
@@ -322,11 +323,12 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
         }
         case horizon_clipping::ltc_space:
         default: {
-            // The edge terms take unit vertices (M^-1 of any scale may leave M^-1 p far from it).
-            const auto local_unit = [&](std::size_t i) { return detail::safe_normalize(local_at(i)); };
-            const auto ltc_at = [&](std::size_t i) { return detail::safe_normalize(m_inv * local_at(i)); };
-            r.form_factor = clamped_cosine<T, Policy>::signed_integral(local_unit, n);
-            const T s = clamped_cosine<T, Policy>::signed_integral(ltc_at, n);
+            // The edge terms take unit vertices (M^-1 of any scale may leave M^-1 p far from it),
+            // normalized once: before the general path, after the quad path's clip.
+            const auto local_dirs = detail::make_directions(local_at);
+            const auto ltc_dirs = detail::make_directions([&](std::size_t i) { return m_inv * local_at(i); });
+            r.form_factor = clamped_cosine<T, Policy>::signed_integral(local_dirs, n);
+            const T s = clamped_cosine<T, Policy>::signed_integral(ltc_dirs, n);
             r.ltc = glm::determinant(m_inv) < T(0) ? -s : s;
             return r;
         }

@@ -67,13 +67,17 @@ inline double theta_over_sin(const glm::dvec3& a, const glm::dvec3& b) {
 // scalar path's own clipped edges and terms (what both paths actually sum) and its crossings:
 //   u / (2 pi) * [ sum_j ((32 + 2 m + 8 k_j) |e_j| + 8 (1 + t_j))  +  sum_X 8 kappa_X (2 + t_X) ].
 // k_j is the conditioning of theta / sin(theta) with respect to c = a.b: 0 for the exact,
-// polynomial and minimax_rational policies (they take the sine from |a x b|, and theta / sin(theta) is flat where they
-// use c), but for rational and fp16_quadratic, which use sqrt(1 - c^2) for c < 0, a change of a
+// polynomial and minimax_rational policies (they take the sine from |a x b|, and
+// theta / sin(theta) is flat where they use c), but for rational and fp16_quadratic, which use sqrt(1 - c^2) for c < 0, a change of a
 // few u in c (the unit vectors' lengths differ by a few u between the paths) changes the term by
 // |c| / (1 - c^2) times as much, up to their clamps (1e-7, 1e-4).
+// With same_normalization (the scalar quad path against the general path: both normalize M^-1 p
+// by the same operations, so the unit vertices and the terms of unclipped edges are bitwise
+// equal), only the summation order (2 m u |e_j|), the crossings and, for the policies that use
+// c, the change of c at a crossing's edges (8 k_j u |e_j|) remain.
 template <typename Policy>
-double clip_tolerance(const glm::mat3& mi, const std::vector<glm::vec3>& v) {
-    const double m = static_cast<double>(v.size() + v.size() / 2);
+double clip_tolerance(const glm::mat3& mi, const std::vector<glm::vec3>& v, bool same_normalization = false) {
+    const double m = static_cast<double>(ltc::clipped_capacity(v.size()));
     constexpr bool uses_c = std::is_same_v<Policy, ltc::edge_policy::rational> ||
                             std::is_same_v<Policy, ltc::edge_policy::fp16_quadratic>;
     const double floor = std::is_same_v<Policy, ltc::edge_policy::rational> ? 1e-7 : 1e-4;
@@ -83,8 +87,13 @@ double clip_tolerance(const glm::mat3& mi, const std::vector<glm::vec3>& v) {
         [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3&) {
             const double c = glm::dot(glm::dvec3(a), glm::dvec3(b));
             const double k = uses_c && c < 0 ? -c / std::max(1 - c * c, floor) : 0.0;
-            sum += (32 + 2 * m + 8 * k) * std::abs(static_cast<double>(ltc::edge_integral_z<Policy>(a, b)));
-            sum += 8 * (1 + theta_over_sin(glm::dvec3(a), glm::dvec3(b)));
+            const double e = std::abs(static_cast<double>(ltc::edge_integral_z<Policy>(a, b)));
+            if (same_normalization) {
+                sum += (2 * m + 8 * k) * e;  // k: a crossing's rounding moves c by a few u
+            } else {
+                sum += (32 + 2 * m + 8 * k) * e;
+                sum += 8 * (1 + theta_over_sin(glm::dvec3(a), glm::dvec3(b)));
+            }
         });
     // Crossings: X = in (-out.z) + out in.z cancels when in and out are nearly opposite (an edge
     // passing close to the shading point); the per-component rounding of the unit vertices (a few

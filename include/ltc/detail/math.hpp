@@ -48,8 +48,6 @@ LTC_HOST_DEVICE inline bool is_finite(const glm::vec<3, T>& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-/// Unit vector along v, or the zero vector when v is zero (a vertex at the shading point),
-/// without overflow of |v|^2 for huge inputs nor underflow for tiny (even subnormal) ones.
 /// v times the power of two that brings its largest component into [1, 2): exact (no rounding,
 /// even from or to subnormals), so directions computed from the result are those of v itself.
 /// Returns 0 for v = 0.
@@ -71,6 +69,8 @@ LTC_HOST_DEVICE LTC_NOINLINE glm::vec<3, T> safe_normalize_rescaled(const glm::v
     return s2 > T(0) ? s * (T(1) / std::sqrt(s2)) : s;
 }
 
+/// Unit vector along v, or the zero vector when v is zero (a vertex at the shading point),
+/// without overflow of |v|^2 for huge inputs nor underflow for tiny (even subnormal) ones.
 template <typename T>
 LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> safe_normalize(const glm::vec<3, T>& v) {
     const T l2 = glm::dot(v, v);
