@@ -1,4 +1,4 @@
-// Batch API (ltc/batch.hpp) against the reference shader path (reference_shader.hpp), side by side
+// Batch API (ltc/shading/batch.hpp) against the reference shader path (reference_shader.hpp), side by side
 // over the same 4096 random configurations as bench_polygon (GGX-like M^-1, a quad crossing the
 // horizon in about half of them): every benchmark evaluates all 4096 items per iteration and
 // reports items/s (SetItemsProcessed), plus, as counters, the maximum absolute and relative error
@@ -13,9 +13,9 @@
 #include "configurations.hpp"
 #include "reference_shader.hpp"
 
-#include <ltc/batch.hpp>
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/shading/batch.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// Benchmarks of the LTC fit (ltc/fit.hpp): one node, one row, the full 64 x 64 GGX table with
+// Benchmarks of the LTC fit (ltc/fitting/fit.hpp): one node, one row, the full 64 x 64 GGX table with
 // 1 and 2 threads, and, side by side, a reference-style fitter configured like the paper's code
 // release (selfshadow/ltc_code, fit/fitLTC.cpp), timed on the same machine in the same run.
 //
@@ -35,8 +35,8 @@
 // is 1e-4 (the 2016 release's; later ones use 1e-5, which ltc::brdf::ggx clamps to 1e-4).
 #include <benchmark/benchmark.h>
 
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/fit.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/fit.hpp>
 
 #include <glm/glm.hpp>
 

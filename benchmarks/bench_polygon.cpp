@@ -6,9 +6,9 @@
 #include "configurations.hpp"
 #include "reference_shader.hpp"
 
-#include <ltc/clipless.hpp>
+#include <ltc/shading/clipless.hpp>
 #include <ltc/ltc.hpp>
-#include <ltc/shading.hpp>
+#include <ltc/shading/polygon_light.hpp>
 
 #include <benchmark/benchmark.h>
 

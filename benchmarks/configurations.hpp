@@ -4,7 +4,7 @@
 // seed: the same set on every machine and standard library.
 #pragma once
 
-#include <ltc/ground_truth.hpp>
+#include <ltc/reference/ground_truth.hpp>
 
 #include <glm/glm.hpp>
 

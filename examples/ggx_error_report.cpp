@@ -5,17 +5,17 @@
 // (--fit-sizes 0 skips section 7; --list prints every configuration; about 40 s on 2 cores.)
 //
 // For every configuration of a documented grid it computes the Monte Carlo ground truth of
-// int_P rho_GGX(V, L) cos(theta_L) dL (ltc/ground_truth.hpp: BRDF sampling + uniform spherical
+// int_P rho_GGX(V, L) cos(theta_L) dL (ltc/reference/ground_truth.hpp: BRDF sampling + uniform spherical
 // polygon sampling, balance heuristic, fixed seed, run until the standard error is below
 // --target (default 0.2%) of the mean, or of 1e-3 albedo for negligible configurations, or
 // 2^22 iterations), and the LTC estimate
 // magnitude * I_ltc(P) of the shipped GGX table (ltc::ggx::fetch; F0 = 1, i.e. no Fresnel,
-// like the ground truth) with each horizon-clipping method of ltc/shading.hpp:
+// like the ground truth) with each horizon-clipping method of ltc/shading/polygon_light.hpp:
 //
 //   exact        horizon_clipping::ltc_space: the paper's order, exact integral of the LTC
 //   clip-first   horizon_clipping::shading_first: clip to the shading horizon, then M^-1
 //   clip-once    clip to the shading horizon only, no clip in LTC space (not offered by
-//                shading.hpp: measured here to see what its second clip changes)
+//                polygon_light.hpp: measured here to see what its second clip changes)
 //   sphere       horizon_clipping::sphere_analytic: Hill's clipless sphere approximation
 //   sphere-tab   horizon_clipping::sphere_table: the same, 32 x 32 table
 //
@@ -40,13 +40,13 @@
 // --list). Relative errors are taken over the configurations whose ground truth is
 // at least 1e-3 of the BRDF's directional albedo (the rest are invisible next to any light
 // that faces the lobe; they are counted and their error is reported as |LTC - GT| / albedo).
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/clipless.hpp>
-#include <ltc/fit.hpp>
-#include <ltc/ggx.hpp>
-#include <ltc/ground_truth.hpp>
-#include <ltc/shading.hpp>
-#include <ltc/table.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/shading/clipless.hpp>
+#include <ltc/fitting/fit.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/reference/ground_truth.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/table.hpp>
 
 #include <algorithm>
 #include <atomic>

@@ -3,12 +3,12 @@
 //
 //   ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp
 //
-// The fit is ltc::fit::fit_table (include/ltc/fit.hpp, which documents the method); the output
+// The fit is ltc::fit::fit_table (include/ltc/fitting/fit.hpp, which documents the method); the output
 // depends only on the options that change the fit (--brdf, --size), never on --threads: the
 // same binary writes the same bytes with any thread count.
-#include <ltc/brdf/beckmann.hpp>
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/fit.hpp>
+#include <ltc/fitting/brdf/beckmann.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/fit.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -37,10 +37,10 @@ const char* const usage_text =
     "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--threads K] [--quiet]\n"
     "\n"
     "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
-    "method of ltc/fit.hpp, and writes it to FILE as a C++ header defining\n"
+    "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
     "ltc::tables::<brdf>_size and ltc::tables::<brdf>_data (N x N nodes x 6 floats: the\n"
     "normalized inverse matrix m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2], the\n"
-    "magnitude and the Fresnel term; layout in ltc/table.hpp).\n"
+    "magnitude and the Fresnel term; layout in ltc/shading/table.hpp).\n"
     "\n"
     "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2\n"
     "  --out FILE     the header to write ('-' for standard output)\n"
@@ -197,8 +197,8 @@ std::string header_text(const std::string& brdf, const char* description, const 
       << ") and a along roughness = a / " << (n - 1) << ".\n"
       << "// Channels: m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] (GLM m[column][row]) of the inverse\n"
       << "// LTC matrix divided by m_inv[1][1]; magnitude = integral of rho cos; fresnel = integral of\n"
-      << "// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/table.hpp) or ltc::" << brdf << "::fetch.\n"
-      << "// Fit (ltc/fit.hpp): M = R [m11 0 m13; 0 m22 0; m31 0 1], R the rotation to the average direction,\n"
+      << "// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/shading/table.hpp) or ltc::" << brdf << "::fetch.\n"
+      << "// Fit (ltc/fitting/fit.hpp): M = R [m11 0 m13; 0 m22 0; m31 0 1], R the rotation to the average direction,\n"
       << "// minimizing the L3 error integral |rho cos - magnitude D|^3 (MIS over " << opt.error_samples << " x "
       << opt.error_samples << " BRDF and LTC samples,\n"
       << "// " << opt.rounds << " rounds, Nelder-Mead tolerance " << opt.tolerance << "); moments over "

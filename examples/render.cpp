@@ -87,13 +87,13 @@
 //
 // Dependencies: GLM, stb_image_write and stb_image (Debian: libstb-dev, <stb/stb_image_write.h>,
 // <stb/stb_image.h>).
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/ground_truth.hpp>
-#include <ltc/light_texture.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/shading.hpp>
-#include <ltc/textured.hpp>
-#include <ltc/textured_ground_truth.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/reference/ground_truth.hpp>
+#include <ltc/shading/light_texture.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/textured_light.hpp>
+#include <ltc/reference/textured_ground_truth.hpp>
 
 #include <glm/glm.hpp>
 
@@ -664,7 +664,7 @@ std::vector<pixel_hit> trace_camera(const scene& s, int width, int height) {
 // ------------------------------------------------------------------------------------------------
 // Shading
 
-/// The GGX model of ltc/brdf/ggx.hpp weighted by Schlick's (1 - V.H)^5: the integrand of the
+/// The GGX model of ltc/fitting/brdf/ggx.hpp weighted by Schlick's (1 - V.H)^5: the integrand of the
 /// LTC table's "fresnel" channel. Same sampling and density as GGX (the weight is in [0, 1]).
 struct ggx_schlick_weight {
     using model = ltc::brdf::ggx<double>;

@@ -1,6 +1,6 @@
 // examples/textured_error_report.cpp -- how good is the textured-light approximation of the
 // paper's sections 5.2-5.4 (I = I_D I_L with I_L one prefiltered fetch)? Prints relative
-// errors against Monte Carlo ground truth (ltc/textured_ground_truth.hpp) and the prefilter's
+// errors against Monte Carlo ground truth (ltc/reference/textured_ground_truth.hpp) and the prefilter's
 // timing for a 1024 x 1024 image.
 //
 // Configurations (all combinations; the shading point at the origin, N = +z, V = (sin theta_v,
@@ -25,11 +25,11 @@
 // MC: 2^15 iterations each (lobe sampling + area sampling proportional to the texture's
 // luminance, mixed with uniform; MIS); the mean relative standard
 // error is printed next to the table so that the errors can be told from noise.
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/ggx.hpp>
-#include <ltc/light_texture.hpp>
-#include <ltc/textured.hpp>
-#include <ltc/textured_ground_truth.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/light_texture.hpp>
+#include <ltc/shading/textured_light.hpp>
+#include <ltc/reference/textured_ground_truth.hpp>
 
 #include <algorithm>
 #include <chrono>

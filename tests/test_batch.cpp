@@ -1,4 +1,4 @@
-// ltc/batch.hpp against the scalar path it vectorizes:
+// ltc/shading/batch.hpp against the scalar path it vectorizes:
 //   transformed<clamped_cosine<float, Policy>>::from_inverse(m_inv).integrate(P, n, s)
 // on thousands of random quads and n-gons crossing the horizon (convex and non-convex, both
 // windings, per-item and shared matrices, one- and two-sided), and on degenerate input.
@@ -20,9 +20,9 @@
 //   - / (2 pi), the sign and the sidedness are identical operations.
 // Items the batch hands to the scalar path (tiny or huge vertices) must match it exactly; a vertex
 // at the origin or a polygon entirely below the horizon gives exactly 0.
-#include <ltc/batch.hpp>
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/shading/batch.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"

@@ -25,8 +25,8 @@
 //     estimate's own relative error is ~ sqrt(2 / N) ~ 0.5%. (A run with 2e7 samples agrees
 //     with the quadrature albedos within 1.3 standard errors.)
 //   - Chi-square: below the p = 1e-4 critical value (Wilson-Hilferty approximation).
-#include <ltc/brdf/beckmann.hpp>
-#include <ltc/brdf/ggx.hpp>
+#include <ltc/fitting/brdf/beckmann.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,11 +1,11 @@
-// Tests of ltc/clipless.hpp: the analytic horizon-clipped sphere form factor (against the
+// Tests of ltc/shading/clipless.hpp: the analytic horizon-clipped sphere form factor (against the
 // production note's literal formula, an independent closed form, and exact integrals of
 // polygons that sandwich a spherical cap), the 32 x 32 table (against a derived interpolation
 // bound), and the error of the clipless approximation against exact clipping over a
 // documented set of polygons.
 #include <catch2/catch.hpp>
 
-#include <ltc/clipless.hpp>
+#include <ltc/shading/clipless.hpp>
 #include <ltc/ltc.hpp>
 
 #include <algorithm>

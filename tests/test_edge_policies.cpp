@@ -2,7 +2,7 @@
 // theta / sin(theta) over c = cos(theta) in [-1, 1], against a long double reference evaluated
 // at the same (rounded) input. The bounds asserted here are the ones documented in the README:
 // u = epsilon / 2 is the unit roundoff of the evaluation type.
-#include <ltc/polygon.hpp>
+#include <ltc/core/polygon.hpp>
 
 #include <catch2/catch.hpp>
 

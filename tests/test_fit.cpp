@@ -1,16 +1,16 @@
-// Tests of ltc/fit.hpp, ltc/table.hpp and ltc/ggx.hpp: the lookup of the shipped GGX table
+// Tests of ltc/fitting/fit.hpp, ltc/shading/table.hpp and ltc/shading/ggx_fetch.hpp: the lookup of the shipped GGX table
 // (exact at nodes, bilinear between them, clamped and finite everywhere), the table's consistency
 // with a re-fit, the determinism of the fit across thread counts, and two properties of the
 // fitted distributions (energy over the hemisphere, the cosine at roughness 1).
 // No 64 x 64 fit happens here: the re-fits are a few rows, the thread test an 8 x 8 table.
 #include <catch2/catch.hpp>
 
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/fit.hpp>
-#include <ltc/ggx.hpp>
-#include <ltc/table.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/fitting/fit.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/table.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
 

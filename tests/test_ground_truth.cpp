@@ -1,4 +1,4 @@
-// Tests of ltc/ground_truth.hpp: the spherical triangle and polygon samplers, and the Monte
+// Tests of ltc/reference/ground_truth.hpp: the spherical triangle and polygon samplers, and the Monte
 // Carlo estimator against closed forms (a Lambertian "BRDF" against ltc::form_factor, the LTC
 // distribution itself against transformed::integrate), for each technique and heuristic.
 //
@@ -7,8 +7,8 @@
 // seed chosen (and, being deterministic, either always or never).
 #include <catch2/catch.hpp>
 
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/ground_truth.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/reference/ground_truth.hpp>
 #include <ltc/ltc.hpp>
 
 #include "support/rng.hpp"

@@ -1,7 +1,7 @@
-// Tests of ltc/light_texture.hpp: the prefiltered levels of section 5.3 against a direct
+// Tests of ltc/shading/light_texture.hpp: the prefiltered levels of section 5.3 against a direct
 // (non-separable, untruncated) evaluation of their definition, normalization, symmetry, the
 // lod mapping and robustness.
-#include <ltc/light_texture.hpp>
+#include <ltc/shading/light_texture.hpp>
 
 #include "support/rng.hpp"
 #include "support/images.hpp"

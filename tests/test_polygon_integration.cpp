@@ -1,6 +1,6 @@
 // Closed-form polygon integrals against an independent brute-force integration (supplement
 // section 2.3), for the four original distributions and for linearly transformed ones; plus the
-// sign, sidedness and horizon-clipping conventions of ltc/polygon.hpp.
+// sign, sidedness and horizon-clipping conventions of ltc/core/polygon.hpp.
 //
 // Tolerances are derived, not tuned: |closed - brute| <= e + B, where e is the brute force's own
 // error estimate (support/brute_force.hpp) and B a first-order bound on the rounding error of the

@@ -13,9 +13,9 @@
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"
 
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <catch2/catch.hpp>
 

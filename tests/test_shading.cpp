@@ -1,13 +1,13 @@
-// Tests of ltc/shading.hpp: the shading frame, the diffuse and specular terms against the
+// Tests of ltc/shading/polygon_light.hpp: the shading frame, the diffuse and specular terms against the
 // library's closed forms, sidedness, degenerate input, the shading_first clip order against an
 // explicitly clipped polygon, and the LTC shading against the Monte Carlo ground truth of the
 // real GGX integral over a small documented grid.
 #include <catch2/catch.hpp>
 
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/ground_truth.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/reference/ground_truth.hpp>
 #include <ltc/ltc.hpp>
-#include <ltc/shading.hpp>
+#include <ltc/shading/polygon_light.hpp>
 
 #include "support/rng.hpp"
 
@@ -78,7 +78,7 @@ std::vector<scene> random_scenes(int count, std::uint64_t seed) {
     return s;
 }
 
-/// The light in the shading frame (T1, T2, N), as shading.hpp builds it.
+/// The light in the shading frame (T1, T2, N), as polygon_light.hpp builds it.
 std::vector<dvec3> local_light(const scene& sc) {
     const auto f = ltc::make_shading_frame(sc.N, sc.V);
     std::vector<dvec3> v;

@@ -1,10 +1,10 @@
-// Tests of ltc/textured.hpp (sections 5.2 and 5.4: I_D I_L, the fetch parameterization, the
+// Tests of ltc/shading/textured_light.hpp (sections 5.2 and 5.4: I_D I_L, the fetch parameterization, the
 // world-space textured quad light) and of its Monte Carlo reference,
-// ltc/textured_ground_truth.hpp.
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/shading.hpp>
-#include <ltc/textured.hpp>
-#include <ltc/textured_ground_truth.hpp>
+// ltc/reference/textured_ground_truth.hpp.
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/textured_light.hpp>
+#include <ltc/reference/textured_ground_truth.hpp>
 
 #include "support/gauss_legendre.hpp"
 #include "support/images.hpp"

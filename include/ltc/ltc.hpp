@@ -3,26 +3,26 @@
 // Linearly Transformed Spherical Distributions and Linearly Transformed Cosines
 // (Heitz, Dupuy, Hill, Neubelt, "Real-Time Polygonal-Light Shading with Linearly Transformed
 // Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. Including single headers instead
-// keeps compile times down: ltc/ggx.hpp (and what includes it) parses the 64 x 64 table.
+// keeps compile times down: ltc/shading/ggx_fetch.hpp (and what includes it) parses the 64 x 64 table.
 #pragma once
 
 #include <ltc/config.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/uniform_sphere.hpp>
-#include <ltc/uniform_hemisphere.hpp>
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/squared_clamped_cosine.hpp>
-#include <ltc/transformed.hpp>
-#include <ltc/brdf/model.hpp>
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/brdf/beckmann.hpp>
-#include <ltc/table.hpp>
-#include <ltc/ggx.hpp>
-#include <ltc/fit.hpp>
-#include <ltc/clipless.hpp>
-#include <ltc/shading.hpp>
-#include <ltc/ground_truth.hpp>
-#include <ltc/light_texture.hpp>
-#include <ltc/textured.hpp>
-#include <ltc/textured_ground_truth.hpp>
-#include <ltc/batch.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/core/uniform_sphere.hpp>
+#include <ltc/core/uniform_hemisphere.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/squared_clamped_cosine.hpp>
+#include <ltc/core/transformed.hpp>
+#include <ltc/fitting/brdf/model.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/brdf/beckmann.hpp>
+#include <ltc/shading/table.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/fitting/fit.hpp>
+#include <ltc/shading/clipless.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/reference/ground_truth.hpp>
+#include <ltc/shading/light_texture.hpp>
+#include <ltc/shading/textured_light.hpp>
+#include <ltc/reference/textured_ground_truth.hpp>
+#include <ltc/shading/batch.hpp>

@@ -2,9 +2,9 @@
 // and any matrix accepted by the checked factory, every integral, density and sample of the
 // library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness. Build: clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined
 // -I include tests/fuzz/fuzz_integrals.cpp; run on tests/fuzz/corpus (see .ci/run).
-#include <ltc/clipless.hpp>
+#include <ltc/shading/clipless.hpp>
 #include <ltc/ltc.hpp>
-#include <ltc/shading.hpp>
+#include <ltc/shading/polygon_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 

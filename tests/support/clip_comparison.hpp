@@ -5,9 +5,9 @@
 
 #include "rng.hpp"
 
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
 

@@ -2,10 +2,10 @@
 // that run on every one of them (Catch2's TEMPLATE_TEST_CASE).
 #pragma once
 
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/squared_clamped_cosine.hpp>
-#include <ltc/uniform_hemisphere.hpp>
-#include <ltc/uniform_sphere.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/squared_clamped_cosine.hpp>
+#include <ltc/core/uniform_hemisphere.hpp>
+#include <ltc/core/uniform_sphere.hpp>
 
 #define LTC_ORIGINAL_DISTRIBUTIONS                                                                  \
     ltc::uniform_sphere<float>, ltc::uniform_sphere<double>, ltc::uniform_hemisphere<float>,         \

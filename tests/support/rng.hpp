@@ -1,9 +1,9 @@
-// Deterministic random numbers for tests: the library's SplitMix64 (ltc/ground_truth.hpp), with
+// Deterministic random numbers for tests: the library's SplitMix64 (ltc/reference/ground_truth.hpp), with
 // doubles in [0, 1) from the top 53 bits. Unlike std::uniform_real_distribution, the sequence is
 // the same on every standard library, so a fixed seed gives the same test on every machine.
 #pragma once
 
-#include <ltc/ground_truth.hpp>
+#include <ltc/reference/ground_truth.hpp>
 
 #include <glm/glm.hpp>
 

@@ -1,4 +1,4 @@
-// ltc/polygon.hpp -- exact integrals over spherical polygons, and horizon clipping.
+// ltc/core/polygon.hpp -- exact integrals over spherical polygons, and horizon clipping.
 //
 // The polygon machinery of the library, usable on its own:
 //   - clip_to_horizon:        Sutherland-Hodgman clipping of an n-gon to the half-space z >= 0;

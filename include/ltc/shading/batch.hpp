@@ -1,4 +1,4 @@
-// ltc/batch.hpp -- the clamped-cosine integral over many polygons at once, from
+// ltc/shading/batch.hpp -- the clamped-cosine integral over many polygons at once, from
 // structure-of-arrays input, written so that the compiler vectorizes the loop over items.
 //
 //   ltc::batch::quad_soa<float> in;
@@ -49,11 +49,11 @@
 // bytes (8 floats) with -march=x86-64-v3. No OpenMP pragma is needed.
 #pragma once
 
-#include <ltc/clamped_cosine.hpp>
+#include <ltc/core/clamped_cosine.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
 

@@ -1,8 +1,8 @@
-// ltc/clipless.hpp -- horizon clipping without clipping: the sphere approximation of Hill and
+// ltc/shading/clipless.hpp -- horizon clipping without clipping: the sphere approximation of Hill and
 // Heitz 2016 ("Real-Time Area Lighting: a Journey from Research to Production", SIGGRAPH
 // course; the Chinese production note of this project, section "水平面裁切").
 //
-//   #include <ltc/clipless.hpp>
+//   #include <ltc/shading/clipless.hpp>
 //   float e = ltc::clipless::integrate(d, vertices, n, ltc::sidedness::one_sided,
 //                                      ltc::clipless::method::analytic);
 //
@@ -96,11 +96,11 @@
 // the horizon.
 #pragma once
 
-#include <ltc/clamped_cosine.hpp>
+#include <ltc/core/clamped_cosine.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
 

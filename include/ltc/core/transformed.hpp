@@ -1,4 +1,4 @@
-// ltc/transformed.hpp -- Linearly Transformed Spherical Distributions (paper section 3,
+// ltc/core/transformed.hpp -- Linearly Transformed Spherical Distributions (paper section 3,
 // supplement section 2): D(w) = D_o(M^-1 w / |M^-1 w|) |M^-1| / |M^-1 w|^3   (eq. 1).
 //
 //   ltc::transformed<ltc::clamped_cosine<float>> d = ...::from_inverse(m_inv);
@@ -10,7 +10,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
+#include <ltc/core/polygon.hpp>
 
 #include <glm/glm.hpp>
 

@@ -1,10 +1,10 @@
-// ltc/uniform_sphere.hpp -- the uniform spherical distribution, D_o = 1 / (4 pi).
+// ltc/core/uniform_sphere.hpp -- the uniform spherical distribution, D_o = 1 / (4 pi).
 // Supplement section 1.1.
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
+#include <ltc/core/polygon.hpp>
 
 #include <glm/glm.hpp>
 

@@ -1,5 +1,5 @@
-// ltc/brdf/ggx.hpp -- the isotropic GGX (Trowbridge-Reitz) microfacet BRDF without Fresnel,
-// the model that the paper fits (section 4), in the interface of ltc/brdf/model.hpp.
+// ltc/fitting/brdf/ggx.hpp -- the isotropic GGX (Trowbridge-Reitz) microfacet BRDF without Fresnel,
+// the model that the paper fits (section 4), in the interface of ltc/fitting/brdf/model.hpp.
 //
 //   D(h)      = alpha^2 / (pi (cos^2 theta_h (alpha^2 - 1) + 1)^2)   (Walter et al. 2007, GGX)
 //   Lambda(w) = (-1 + sqrt(1 + alpha^2 tan^2 theta)) / 2             (Heitz 2014, "Understanding
@@ -31,7 +31,7 @@
 //     w.z <= 0 (its limit at the horizon is +infinity).
 #pragma once
 
-#include <ltc/brdf/model.hpp>
+#include <ltc/fitting/brdf/model.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
 

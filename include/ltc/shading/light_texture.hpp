@@ -1,5 +1,5 @@
-// ltc/light_texture.hpp -- prefiltered textures of textured polygonal lights (paper sections
-// 5.2 and 5.3): the stack of Gaussian-filtered levels that the fetch of ltc/textured.hpp reads.
+// ltc/shading/light_texture.hpp -- prefiltered textures of textured polygonal lights (paper sections
+// 5.2 and 5.3): the stack of Gaussian-filtered levels that the fetch of ltc/shading/textured_light.hpp reads.
 //
 //   std::vector<glm::vec3> rgb(width * height);                  // linear RGB, row-major
 //   ltc::light_texture<float> tex(width, height, rgb.data());    // prefilters every level
@@ -156,7 +156,7 @@ inline glm::vec3 lerp_exact(const glm::vec3& a, const glm::vec3& b, float t) { r
 
 /// Bilinear lookup of an unfiltered width x height row-major RGB image at uv (texel centres at
 /// ((x + 0.5) / width, (y + 0.5) / height), clamp-to-edge): the radiance L(uv) of a textured
-/// light, as the ground truth (ltc/textured_ground_truth.hpp) sees it. Non-finite uv -> centre.
+/// light, as the ground truth (ltc/reference/textured_ground_truth.hpp) sees it. Non-finite uv -> centre.
 template <typename C, typename T>
 inline C bilinear_image_lookup(int width, int height, const C* rgb, T u, T v) {
     if (!std::isfinite(static_cast<double>(u))) u = T(0.5);

@@ -1,5 +1,5 @@
-// ltc/brdf/beckmann.hpp -- the isotropic Beckmann microfacet BRDF without Fresnel, in the
-// interface of ltc/brdf/model.hpp (the paper fits it next to GGX, section 4).
+// ltc/fitting/brdf/beckmann.hpp -- the isotropic Beckmann microfacet BRDF without Fresnel, in the
+// interface of ltc/fitting/brdf/model.hpp (the paper fits it next to GGX, section 4).
 //
 //   D(h)      = exp(-tan^2 theta_h / alpha^2) / (pi alpha^2 cos^4 theta_h)  (Walter et al. 2007)
 //   Lambda(w) = (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)),  a = 1 / (alpha tan theta)
@@ -29,7 +29,7 @@
 // V.z <= 0 or L.z <= 0: eval = 0; V.z <= 0: pdf = 0; L = -V: 0.
 #pragma once
 
-#include <ltc/brdf/model.hpp>
+#include <ltc/fitting/brdf/model.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
 

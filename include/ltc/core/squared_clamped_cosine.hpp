@@ -1,10 +1,10 @@
-// ltc/squared_clamped_cosine.hpp -- the squared clamped cosine distribution,
+// ltc/core/squared_clamped_cosine.hpp -- the squared clamped cosine distribution,
 // D_o = 3 max(0, z)^2 / (2 pi). Supplement section 1.4.
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
+#include <ltc/core/polygon.hpp>
 
 #include <glm/glm.hpp>
 

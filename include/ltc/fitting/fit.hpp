@@ -1,11 +1,11 @@
-// ltc/fit.hpp -- fitting Linearly Transformed Cosines to a BRDF (paper section 4), and whole
-// tables of them (the paper's 64 x 64 GGX table, or any BRDF model of ltc/brdf/model.hpp).
+// ltc/fitting/fit.hpp -- fitting Linearly Transformed Cosines to a BRDF (paper section 4), and whole
+// tables of them (the paper's 64 x 64 GGX table, or any BRDF model of ltc/fitting/brdf/model.hpp).
 //
-//   #include <ltc/fit.hpp>
-//   #include <ltc/brdf/ggx.hpp>
+//   #include <ltc/fitting/fit.hpp>
+//   #include <ltc/fitting/brdf/ggx.hpp>
 //   ltc::fit::options opt;                                   // 64 x 64, all cores
 //   ltc::fit::table tab = ltc::fit::fit_table<ltc::brdf::ggx>(opt);
-//   std::vector<float> data = tab.packed();                  // the layout of ltc/table.hpp
+//   std::vector<float> data = tab.packed();                  // the layout of ltc/shading/table.hpp
 //   ltc::ltc_table view(data.data(), tab.size, tab.size);    // then view.fetch(cos, roughness)
 //
 // What is fitted. For a view direction V = (sin theta_v, 0, cos theta_v) (local frame N = +z)
@@ -56,7 +56,7 @@
 // simplex falls below options::tolerance or after options::max_evaluations evaluations.
 //
 // Table. Node (t, a) of an N x N table has x = t / (N - 1), cos theta_v = max(1 - x^2, cos_min)
-// and roughness r = a / (N - 1), alpha = max(r^2, alpha_min) (see ltc/table.hpp). As in the
+// and roughness r = a / (N - 1), alpha = max(r^2, alpha_min) (see ltc/shading/table.hpp). As in the
 // paper's code, the normal-incidence nodes are fitted first, from roughness 1 (started at the
 // cosine, M = I) down to roughness 0, each started from the previous one; then each row of
 // constant roughness is fitted from its normal-incidence node towards grazing angles, each node
@@ -70,10 +70,10 @@
 // elsewhere in the library do not move the bits of a generated table.
 #pragma once
 
-#include <ltc/brdf/model.hpp>
+#include <ltc/fitting/brdf/model.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/table.hpp>
+#include <ltc/shading/table.hpp>
 
 #include <glm/glm.hpp>
 
@@ -615,7 +615,7 @@ struct table {
     const node_result& at(int t, int a) const { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
     node_result& at(int t, int a) { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
 
-    /// The size * size * 6 floats of ltc/table.hpp.
+    /// The size * size * 6 floats of ltc/shading/table.hpp.
     std::vector<float> packed() const {
         std::vector<float> d;
         d.reserve(nodes.size() * channel::count);

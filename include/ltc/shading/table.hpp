@@ -1,4 +1,4 @@
-// ltc/table.hpp -- precomputed LTC tables and their bilinear lookup (paper section 4,
+// ltc/shading/table.hpp -- precomputed LTC tables and their bilinear lookup (paper section 4,
 // "Representation and Storage"; Hill and Heitz 2016 for the Fresnel term).
 //
 //   const ltc::ltc_table table(data, width, height);     // a view over width*height*6 floats

@@ -1,7 +1,7 @@
-// ltc/shading.hpp -- shading a point with a constant-radiance polygonal light (paper section 5.1;
+// ltc/shading/polygon_light.hpp -- shading a point with a constant-radiance polygonal light (paper section 5.1;
 // Hill and Heitz 2016 for the Fresnel term and the clipless variant).
 //
-//   #include <ltc/shading.hpp>
+//   #include <ltc/shading/polygon_light.hpp>
 //   ltc::polygon_light_result<float> r = ltc::shade_polygon_light(
 //       P, N, V, roughness, F0, albedo, radiance, vertices, n, ltc::sidedness::one_sided);
 //   glm::vec3 colour = r.specular + r.diffuse;
@@ -18,7 +18,7 @@
 // the clipless approximation) and I_ltc the integral of the LTC
 // distribution over the polygon (eq. 3), its coefficients (M^-1, magnitude, fresnel) taken from
 // the GGX table at (cos theta_v, roughness). magnitude I_ltc approximates int_P rho cos (the
-// fit's error, measured by examples/ggx_error_report.cpp against ltc/ground_truth.hpp).
+// fit's error, measured by examples/ggx_error_report.cpp against ltc/reference/ground_truth.hpp).
 //
 // Frame. The LTC table is fitted in the local frame N = +z, V = (sin theta_v, 0, cos theta_v),
 // so the polygon is rotated into (T1, T2, N) with T1 = normalize(V - N (V.N)), T2 = N x T1 (a
@@ -48,7 +48,7 @@
 //                        applies M^-1 and clips again in LTC space (D_o is a clamped cosine:
 //                        without that clip the integral is not D's). Exact integral of D over
 //                        the part of the polygon above the surface; nothing leaks from below.
-//   sphere_analytic,     Hill's clipless approximation (ltc/clipless.hpp) for both terms: no
+//   sphere_analytic,     Hill's clipless approximation (ltc/shading/clipless.hpp) for both terms: no
 //   sphere_table         polygon clipping at all; the analytic or tabulated sphere form factor.
 // Which is better where, measured by examples/ggx_error_report.cpp (shipped 64 x 64 GGX table
 // against the Monte Carlo ground truth, 720 configurations, 195 of them with a significant
@@ -89,15 +89,15 @@
 // specular except for ltc_space's leak (above).
 #pragma once
 
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/clipless.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/shading/clipless.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/table.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/shading/table.hpp>
+#include <ltc/core/transformed.hpp>
 
-#include <ltc/ggx.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
 
 #include <glm/glm.hpp>
 

@@ -1,10 +1,10 @@
-// ltc/uniform_hemisphere.hpp -- the uniform hemispherical distribution, D_o = 1 / (2 pi) for
+// ltc/core/uniform_hemisphere.hpp -- the uniform hemispherical distribution, D_o = 1 / (2 pi) for
 // z >= 0. Supplement section 1.2.
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
+#include <ltc/core/polygon.hpp>
 
 #include <glm/glm.hpp>
 

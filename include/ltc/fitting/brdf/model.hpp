@@ -1,4 +1,4 @@
-// ltc/brdf/model.hpp -- the small interface that a BRDF model offers to the LTC fitter and to
+// ltc/fitting/brdf/model.hpp -- the small interface that a BRDF model offers to the LTC fitter and to
 // the Monte Carlo ground truth (paper section 4).
 //
 // A model is a class template B<T> (T = float or double) with static members, in the local

@@ -1,4 +1,4 @@
-// ltc/textured_ground_truth.hpp -- Monte Carlo ground truth for textured quad lights: the RGB
+// ltc/reference/textured_ground_truth.hpp -- Monte Carlo ground truth for textured quad lights: the RGB
 // integral of L(w) f(w) over a quad, where L is the (unfiltered) texture seen through the quad
 // and f a lobe: rho(V, w) cos(theta_w) of a BRDF model (ltc::brdf::ggx), or an LTC's D(w).
 //
@@ -8,9 +8,9 @@
 //       ltc::textured_ground_truth::brdf_lobe<ltc::brdf::ggx<double>>{V, alpha}, quad, radiance, opt);
 //   // e.mean +- e.standard_error (per channel)
 //
-// Frame: the local shading frame of ltc/brdf/model.hpp (shading point at the origin, N = +z).
+// Frame: the local shading frame of ltc/fitting/brdf/model.hpp (shading point at the origin, N = +z).
 // The quad quad[0..3] carries uv (0,0), (1,0), (1,1), (0,1) on the parallelogram q_0 + u (q_1 -
-// q_0) + v (q_3 - q_0), the mapping of ltc/textured.hpp. The integral is over the set of
+// q_0) + v (q_3 - q_0), the mapping of ltc/shading/textured_light.hpp. The integral is over the set of
 // directions that hit the quad, whatever its orientation (two-sided).
 //
 // Estimator: per iteration, one direction from each of two techniques, combined by multiple
@@ -27,8 +27,8 @@
 // Deterministic for a fixed seed (SplitMix64, doubles from the top 53 bits).
 #pragma once
 
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
 
@@ -52,7 +52,7 @@ struct estimate {
     std::size_t samples = 0;
 };
 
-/// rho(V, w) cos theta_w of a BRDF model (ltc/brdf/model.hpp) for the view V and alpha.
+/// rho(V, w) cos theta_w of a BRDF model (ltc/fitting/brdf/model.hpp) for the view V and alpha.
 template <typename Model>
 struct brdf_lobe {
     glm::dvec3 V{0.0, 0.0, 1.0};

@@ -1,10 +1,10 @@
-// ltc/clamped_cosine.hpp -- the clamped cosine distribution, D_o = max(0, z) / pi: the
+// ltc/core/clamped_cosine.hpp -- the clamped cosine distribution, D_o = max(0, z) / pi: the
 // "cosine" of Linearly Transformed Cosines. Supplement section 1.3; paper section 3.
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/polygon.hpp>
+#include <ltc/core/polygon.hpp>
 
 #include <glm/glm.hpp>
 

@@ -1,5 +1,5 @@
-// ltc/textured.hpp -- shading with textured quad lights (paper sections 5.2 and 5.4): the
-// radiance of the light is a 2D colour texture, prefiltered by ltc/light_texture.hpp.
+// ltc/shading/textured_light.hpp -- shading with textured quad lights (paper sections 5.2 and 5.4): the
+// radiance of the light is a 2D colour texture, prefiltered by ltc/shading/light_texture.hpp.
 //
 //   ltc::light_texture<float> tex(width, height, rgb);               // once per texture
 //   glm::vec3 I = ltc::integrate_textured_quad(d, quad, tex);        // ~ int_quad L(w) D(w) dw
@@ -34,7 +34,7 @@
 // texture coordinate of the world-space point whose image is f. Texture mapping: the quad is
 // taken as the parallelogram spanned from corner 0 by corners 1 and 3 (exact for rectangles
 // and parallelograms; corner 2 only enters the area vector), the same mapping as the ground
-// truth of ltc/textured_ground_truth.hpp.
+// truth of ltc/reference/textured_ground_truth.hpp.
 //
 // Robustness (never NaN or Inf for finite input):
 //   - plane behind the shading point, or light below the horizon: |r| is used; I_D is 0 for a
@@ -69,12 +69,12 @@
 // (mean 3.4-11% by roughness, up to 88% at roughness 0.1 and grazing view in this grid).
 #pragma once
 
-#include <ltc/clamped_cosine.hpp>
-#include <ltc/ggx.hpp>
-#include <ltc/light_texture.hpp>
-#include <ltc/polygon.hpp>
-#include <ltc/shading.hpp>
-#include <ltc/transformed.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/light_texture.hpp>
+#include <ltc/core/polygon.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
 
@@ -154,7 +154,7 @@ struct textured_light_result {
 ///
 /// P the shading point, N the normal, V towards the eye (both normalized here), alpha =
 /// roughness^2, quad[0..3] the world-space corners with uv (0,0), (1,0), (1,1), (0,1). The frame
-/// is the one of shade_polygon_light (ltc/shading.hpp, make_shading_frame): T1 = normalize(V -
+/// is the one of shade_polygon_light (ltc/shading/polygon_light.hpp, make_shading_frame): T1 = normalize(V -
 /// N (V.N)), T2 = N x T1, robust when V ~ N; cos theta_v = clamp(N.V, 0, 1). With a constant
 /// texture c it equals shade_polygon_light(..., radiance = c, ...) with ltc_space clipping.
 /// Zero for N = 0; finite for any finite input.
