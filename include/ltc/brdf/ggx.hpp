@@ -1,0 +1,3 @@
+// ltc/brdf/ggx.hpp -- deprecated path, kept through ltc 0.x: include <ltc/fitting/brdf/ggx.hpp>.
+#pragma once
+#include <ltc/fitting/brdf/ggx.hpp>

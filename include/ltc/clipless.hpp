@@ -1,0 +1,3 @@
+// ltc/clipless.hpp -- deprecated path, kept through ltc 0.x: include <ltc/shading/clipless.hpp>.
+#pragma once
+#include <ltc/shading/clipless.hpp>

@@ -1,0 +1,3 @@
+// ltc/squared_clamped_cosine.hpp -- deprecated path, kept through ltc 0.x: include <ltc/core/squared_clamped_cosine.hpp>.
+#pragma once
+#include <ltc/core/squared_clamped_cosine.hpp>

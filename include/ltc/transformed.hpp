@@ -1,0 +1,3 @@
+// ltc/transformed.hpp -- deprecated path, kept through ltc 0.x: include <ltc/core/transformed.hpp>.
+#pragma once
+#include <ltc/core/transformed.hpp>
