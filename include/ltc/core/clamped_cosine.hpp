@@ -4,7 +4,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/core/polygon.hpp>
+#include <ltc/core/form_factor.hpp>
 
 #include <glm/glm.hpp>
 
@@ -12,7 +12,7 @@
 
 namespace ltc {
 
-/// EdgePolicy selects how integrate() evaluates the edge terms (polygon.hpp, edge_policy).
+/// EdgePolicy selects how integrate() evaluates the edge terms (ltc/core/edge_policy.hpp).
 template <typename T, typename EdgePolicy = edge_policy::exact>
 struct clamped_cosine {
     using scalar = T;

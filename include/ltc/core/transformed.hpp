@@ -10,7 +10,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/core/polygon.hpp>
+#include <ltc/core/sidedness.hpp>
 
 #include <glm/glm.hpp>
 
@@ -81,7 +81,7 @@ struct transformed_vertices {
         if (l2 > T(1e-30) && l2 < T(1e30)) return q * (T(1) / std::sqrt(l2));
         return rescaled(m_inv, p);
     }
-    /// M^-1 p_i before normalization (for the quad path of polygon.hpp).
+    /// M^-1 p_i before normalization (for the quad path, ltc/core/quad_path.hpp).
     LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> raw(std::size_t i) const { return m_inv * v[i]; }
     static LTC_HOST_DEVICE LTC_NOINLINE glm::vec<3, T> rescaled(const glm::mat<3, 3, T>& m, const glm::vec<3, T>& p) {
         return safe_normalize(m * rescale_pow2(p));

@@ -4,7 +4,8 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/core/polygon.hpp>
+#include <ltc/core/sidedness.hpp>
+#include <ltc/core/solid_angle.hpp>
 
 #include <glm/glm.hpp>
 
