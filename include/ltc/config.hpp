@@ -5,7 +5,7 @@
 #pragma once
 
 #define LTC_VERSION_MAJOR 0
-#define LTC_VERSION_MINOR 1
+#define LTC_VERSION_MINOR 2
 #define LTC_VERSION_PATCH 0
 
 #if defined(__CUDACC__)

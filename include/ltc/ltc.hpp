@@ -2,27 +2,41 @@
 //
 // Linearly Transformed Spherical Distributions and Linearly Transformed Cosines
 // (Heitz, Dupuy, Hill, Neubelt, "Real-Time Polygonal-Light Shading with Linearly Transformed
-// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. Including single headers instead
-// keeps compile times down: ltc/shading/ggx_fetch.hpp (and what includes it) parses the 64 x 64 table.
+// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. The folders are the layers:
+//
+//   ltc/core/       the paper's mathematics: the original distributions, transformed<>, and the
+//                   polygon machinery (horizon clipping, edge terms, form factors, solid angles);
+//   ltc/shading/    what a renderer shades with: polygonal and textured lights, the GGX table
+//                   fetch, the clipless approximation, structure-of-arrays batches;
+//   ltc/fitting/    offline: BRDF models and the fitter that makes the tables;
+//   ltc/reference/  Monte Carlo ground truth, to validate the approximations (and a renderer);
+//   ltc/tables/     generated data (the 64 x 64 GGX table); ltc/detail/: internals.
+//
+// Including single headers instead keeps compile times down: ltc/shading/ggx_fetch.hpp (and what
+// includes it) parses the 64 x 64 table, ltc/fitting/ pulls in <thread>.
 #pragma once
 
 #include <ltc/config.hpp>
+
 #include <ltc/core/polygon.hpp>
 #include <ltc/core/uniform_sphere.hpp>
 #include <ltc/core/uniform_hemisphere.hpp>
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/squared_clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
+
+#include <ltc/shading/table.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/clipless.hpp>
+#include <ltc/shading/light_texture.hpp>
+#include <ltc/shading/textured_light.hpp>
+#include <ltc/shading/batch.hpp>
+
 #include <ltc/fitting/brdf/model.hpp>
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/fitting/brdf/beckmann.hpp>
-#include <ltc/shading/table.hpp>
-#include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/fitting/fit.hpp>
-#include <ltc/shading/clipless.hpp>
-#include <ltc/shading/polygon_light.hpp>
+
 #include <ltc/reference/ground_truth.hpp>
-#include <ltc/shading/light_texture.hpp>
-#include <ltc/shading/textured_light.hpp>
 #include <ltc/reference/textured_ground_truth.hpp>
-#include <ltc/shading/batch.hpp>
