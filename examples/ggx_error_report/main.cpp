@@ -40,183 +40,36 @@
 // --list). Relative errors are taken over the configurations whose ground truth is
 // at least 1e-3 of the BRDF's directional albedo (the rest are invisible next to any light
 // that faces the lobe; they are counted and their error is reported as |LTC - GT| / albedo).
+//
+// Source files (examples/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
+// LTC estimate with each method), statistics.hpp (relative errors and their summaries),
+// parallel_for.hpp (worker threads), and this file: the command line, the ground truth and the
+// report.
+#include "grid.hpp"
+#include "ltc_estimate.hpp"
+#include "parallel_for.hpp"
+#include "statistics.hpp"
+
 #include <ltc/fitting/brdf/ggx.hpp>
-#include <ltc/shading/clipless.hpp>
 #include <ltc/fitting/fit.hpp>
-#include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/reference/ground_truth.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/table.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
 
+using namespace ggx_error_report;  // the pieces above
+
 namespace {
-
-using glm::dvec3;
-constexpr double deg = 3.141592653589793 / 180.0;
-
-enum method_id { exact, clip_first, clip_once, sphere, sphere_tab, method_count };
-const char* const method_names[method_count] = {"exact", "clip-first", "clip-once", "sphere", "sphere-tab"};
-
-const double thetas[] = {0, 30, 60, 80};
-const double roughnesses[] = {0.1, 0.25, 0.5, 0.75, 1.0};
-const char* const shape_names[] = {"rectangle", "triangle", "pentagon"};
-const double sizes[] = {0.1, 0.5, 2.0};
-const char* const placement_names[] = {"mirror", "zenith", "side", "low"};
-
-struct config {
-    int theta, rough, shape, size, placement;  // indices into the arrays above
-    std::vector<dvec3> vertices;
-    bool straddles = false;  // partly below the horizon
-    ltc::ground_truth::estimate gt;
-};
-
-/// A light of the given shape, circumradius s, centred at distance 1 along c, facing the origin,
-/// its vertices clockwise as seen from the origin (front face, polygon.hpp's convention).
-std::vector<dvec3> make_light(int shape, double s, const dvec3& c) {
-    std::vector<glm::dvec2> p;
-    if (shape == 0) {  // 2:1 rectangle with circumradius s
-        const double a = s * 2 / std::sqrt(5.0), b = s / std::sqrt(5.0);
-        p = {{-a, -b}, {a, -b}, {a, b}, {-a, b}};
-    } else {
-        const int n = shape == 1 ? 3 : 5;
-        for (int i = 0; i < n; ++i) {
-            const double phi = 2 * 3.141592653589793 * i / n + 0.3;
-            p.push_back({s * std::cos(phi), s * std::sin(phi)});
-        }
-    }
-    // Tangent frame of the light plane: e1, e2 orthogonal to c.
-    const dvec3 e1 = glm::normalize(std::abs(c.z) < 0.9 ? glm::cross(dvec3(0, 0, 1), c) : glm::cross(dvec3(1, 0, 0), c));
-    const dvec3 e2 = glm::cross(c, e1);
-    std::vector<dvec3> v;
-    for (const auto& q : p) v.push_back(c + q.x * e1 + q.y * e2);
-    // Front face (polygon.hpp): the right-hand normal points away from the origin.
-    const dvec3 nrm = glm::cross(v[1] - v[0], v[2] - v[0]);
-    if (glm::dot(v[0], nrm) < 0) std::reverse(v.begin(), v.end());
-    return v;
-}
-
-dvec3 placement_direction(int placement, double theta) {
-    const auto dir = [](double azimuth_deg, double elevation_deg) {
-        const double a = azimuth_deg * deg, e = elevation_deg * deg;
-        return dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
-    };
-    switch (placement) {
-        case 0: return dvec3(-std::sin(theta * deg), 0, std::cos(theta * deg));
-        case 1: return dvec3(0, 0, 1);
-        case 2: return dir(90, 30);
-        default: return dir(135, 5);
-    }
-}
-
-std::vector<config> make_grid() {
-    std::vector<config> grid;
-    for (int t = 0; t < 4; ++t)
-        for (int r = 0; r < 5; ++r)
-            for (int sh = 0; sh < 3; ++sh)
-                for (int sz = 0; sz < 3; ++sz)
-                    for (int pl = 0; pl < 4; ++pl) {
-                        config c{t, r, sh, sz, pl, {}, false, {}};
-                        c.vertices = make_light(sh, sizes[sz], placement_direction(pl, thetas[t]));
-                        for (const auto& v : c.vertices) c.straddles = c.straddles || v.z < 0;
-                        grid.push_back(std::move(c));
-                    }
-    return grid;
-}
-
-template <typename F>
-void parallel_for(std::size_t n, unsigned threads, F&& f) {
-    std::atomic<std::size_t> next{0};
-    std::vector<std::thread> pool;
-    for (unsigned k = 0; k < threads; ++k)
-        pool.emplace_back([&] {
-            for (std::size_t i; (i = next.fetch_add(1)) < n;) f(i);
-        });
-    for (auto& t : pool) t.join();
-}
-
-using fetch_fn = std::function<ltc::ltc_coefficients<double>(double, double)>;
-
-/// magnitude * I_ltc for the configuration, with the given method.
-double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
-    const double theta = thetas[c.theta] * deg;
-    const dvec3 N(0, 0, 1), V(std::sin(theta), 0, std::cos(theta)), P(0);
-    const auto frame = ltc::make_shading_frame(N, V);
-    const auto lobe = fetch(frame.cos_theta_v, roughnesses[c.rough]);
-    const std::size_t n = c.vertices.size();
-    double I = 0;
-    switch (m) {
-        case exact: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::ltc_space).ltc; break;
-        case clip_first: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::shading_first).ltc; break;
-        case clip_once: {
-            const auto at = [&](std::size_t i) { return frame.to_local(c.vertices[i] - P); };
-            I = ltc::detail::integrals_shading_first<double>(lobe.m_inv, at, n, false).ltc;
-            break;
-        }
-        case sphere: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::sphere_analytic).ltc; break;
-        default: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::sphere_table).ltc; break;
-    }
-    return lobe.magnitude * std::max(0.0, I);  // the lights are front-facing: one-sided
-}
-
-struct stats {
-    double mean = 0, p95 = 0, max = 0;
-    std::size_t count = 0;
-};
-
-stats summarize(std::vector<double> e) {
-    stats s;
-    s.count = e.size();
-    if (e.empty()) return s;
-    std::sort(e.begin(), e.end());
-    double sum = 0;
-    for (double x : e) sum += x;
-    s.mean = sum / double(e.size());
-    // 95th percentile: the smallest value with at least 95% of the sample at or below it.
-    std::size_t k = std::size_t(std::ceil(0.95 * double(e.size())));
-    s.p95 = e[std::min(e.size() - 1, k > 0 ? k - 1 : 0)];
-    s.max = e.back();
-    return s;
-}
-
-struct evaluation {
-    std::vector<double> value[method_count];  // LTC estimates per configuration
-    std::vector<double> albedo;               // magnitude of the table at the configuration
-};
-
-evaluation evaluate(const std::vector<config>& grid, const fetch_fn& fetch, bool all_methods) {
-    evaluation ev;
-    for (int m = 0; m < method_count; ++m) ev.value[m].resize(grid.size());
-    ev.albedo.resize(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const auto& c = grid[i];
-        ev.albedo[i] = fetch(std::cos(thetas[c.theta] * deg), roughnesses[c.rough]).magnitude;
-        for (int m = 0; m < method_count; ++m)
-            if (all_methods || m == exact) ev.value[m][i] = ltc_estimate(c, fetch, m);
-    }
-    return ev;
-}
-
-bool significant(const config& c, double albedo) { return c.gt.mean >= 1e-3 * albedo; }
-
-std::vector<double> rel_errors(const std::vector<config>& grid, const evaluation& ev, int m,
-                               const std::function<bool(const config&)>& keep) {
-    std::vector<double> e;
-    for (std::size_t i = 0; i < grid.size(); ++i)
-        if (keep(grid[i]) && significant(grid[i], ev.albedo[i]))
-            e.push_back(std::abs(ev.value[m][i] - grid[i].gt.mean) / grid[i].gt.mean);
-    return e;
-}
 
 std::vector<int> parse_sizes(const char* s) {
     std::vector<int> r;

@@ -1,0 +1,68 @@
+// ggx_error_report/ltc_estimate.hpp -- the LTC estimate magnitude * I_ltc of a configuration with
+// each horizon-clipping method (exact, clip-first, clip-once, sphere, sphere-tab: main.cpp's file
+// comment), from any table (a fetch function), for the whole grid.
+#pragma once
+
+#include "grid.hpp"
+
+#include <ltc/shading/clipless.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/table.hpp>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace ggx_error_report {
+
+enum method_id { exact, clip_first, clip_once, sphere, sphere_tab, method_count };
+const char* const method_names[method_count] = {"exact", "clip-first", "clip-once", "sphere", "sphere-tab"};
+
+using fetch_fn = std::function<ltc::ltc_coefficients<double>(double, double)>;
+
+/// magnitude * I_ltc for the configuration, with the given method.
+inline double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
+    const double theta = thetas[c.theta] * deg;
+    const dvec3 N(0, 0, 1), V(std::sin(theta), 0, std::cos(theta)), P(0);
+    const auto frame = ltc::make_shading_frame(N, V);
+    const auto lobe = fetch(frame.cos_theta_v, roughnesses[c.rough]);
+    const std::size_t n = c.vertices.size();
+    double I = 0;
+    switch (m) {
+        case exact: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::ltc_space).ltc; break;
+        case clip_first: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::shading_first).ltc; break;
+        case clip_once: {
+            const auto at = [&](std::size_t i) { return frame.to_local(c.vertices[i] - P); };
+            I = ltc::detail::integrals_shading_first<double>(lobe.m_inv, at, n, false).ltc;
+            break;
+        }
+        case sphere: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::sphere_analytic).ltc; break;
+        default: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::sphere_table).ltc; break;
+    }
+    return lobe.magnitude * std::max(0.0, I);  // the lights are front-facing: one-sided
+}
+
+struct evaluation {
+    std::vector<double> value[method_count];  // LTC estimates per configuration
+    std::vector<double> albedo;               // magnitude of the table at the configuration
+};
+
+inline evaluation evaluate(const std::vector<config>& grid, const fetch_fn& fetch, bool all_methods) {
+    evaluation ev;
+    for (int m = 0; m < method_count; ++m) ev.value[m].resize(grid.size());
+    ev.albedo.resize(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const auto& c = grid[i];
+        ev.albedo[i] = fetch(std::cos(thetas[c.theta] * deg), roughnesses[c.rough]).magnitude;
+        for (int m = 0; m < method_count; ++m)
+            if (all_methods || m == exact) ev.value[m][i] = ltc_estimate(c, fetch, m);
+    }
+    return ev;
+}
+
+
+}  // namespace ggx_error_report

@@ -1,0 +1,292 @@
+// render -- a small CPU renderer: LTC shading of polygonal lights next to its Monte Carlo reference.
+//
+//   render [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]
+//          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R] [--help]
+//
+// The scene (z up): a tiled ground plane seen by a pinhole camera 2.8 units above it, lit by two
+// one-sided, constant-radiance polygonal lights standing behind the floor, facing the camera and
+// tilted 10 degrees towards the floor: a warm 1.2 x 3.4 rectangle leaning 20 degrees (rotated in
+// its own plane; left) and a cool irregular pentagon (right); and between them a one-sided
+// textured quad light (paper sections 5.2-5.4) in the same plane: by default a procedural
+// stained-glass window (192 x 256 texels, generated here: a pointed arch of coloured glass
+// cells and a rose, joined by dark lead lines, on a black -- non-emitting -- surround), or any
+// image given by --texture (loaded with stb_image). The lights are drawn as emitters where the
+// camera sees them (their radiance, the textured one with its texture, the same in both
+// renders); there are no shadows (nothing in the scene can occlude a light).
+//
+// Floor layout: four material stripes running away from the camera, crossed by five bands of
+// roughness, so that each light's reflection runs along a stripe boundary through every band:
+//   stripes, left to right   dielectric | gold | dielectric | copper
+//                            (the rectangle's reflection straddles the first boundary, the
+//                            textured light's the middle one, the pentagon's the last one)
+//   bands, near to far       roughness 0.9, 0.7, 0.5, 0.3, 0.1 (alpha = roughness^2)
+//   dielectric: F0 = 0.04 and a Lambertian albedo 0.5; gold, copper: coloured F0, no diffuse;
+//   thin grout lines between the tiles (a rough, dark dielectric).
+// The camera sees the floor at theta_v = 50 to 76 degrees from its normal: grazing angles, where
+// the fitted LTC table is least accurate (see the README's error table).
+//
+// Images, written into --out (default: the current directory):
+//   ltc.png        per pixel and light, ltc::shade_polygon_light (specular + diffuse; default
+//                  horizon clipping, one-sided): the GGX LTC table, the exact polygon integral,
+//                  Schlick's Fresnel through the table's magnitude and fresnel terms (Hill
+//                  2016); for the textured light ltc::shade_textured_quad_light (the same table
+//                  and Fresnel, I_D I_L: the exact polygon integral times one trilinear fetch
+//                  into the prefiltered ltc::light_texture, specular and diffuse). float.
+//   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
+//                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
+//                  (BRDF sampling of visible normals + uniform spherical-polygon sampling, balance
+//                  heuristic, one direction from each technique per iteration, --spp iterations
+//                  each),
+//                      A = int_P rho cos dL                 (model ltc::brdf::ggx<double>)
+//                      B = int_P rho cos (1 - V.H)^5 dL      (the same, times Schlick's weight)
+//                  so that the specular radiance with Schlick's Fresnel is exactly
+//                  radiance * (F0 A + (1 - F0) B); the diffuse term is the closed-form
+//                  clipped form factor (ltc::form_factor, exact: no approximation to measure
+//                  there). For the textured light, ltc::textured_ground_truth::integrate of the
+//                  real (unfiltered, bilinearly interpolated) texture, --spp iterations:
+//                      S = int_Q L(w) F(V, w) rho cos dw   (lobe brdf_lobe<ggx<double>>, RGB)
+//                      D = int_Q L(w) cos / pi dw          (lobe ltc_lobe, M = I: the clamped
+//                                                           cosine; only where albedo > 0)
+//                  radiance S + albedo D. The estimator weights each sample by a scalar lobe
+//                  times the RGB radiance callback L(u, v); Schlick's Fresnel
+//                  F = F0 + (1 - F0) (1 - V.H)^5 depends on the direction only, and on the quad
+//                  each (u, v) is one direction w = x(u, v) / |x(u, v)|, so the callback returns
+//                  L(u, v) F(V, w(u, v)): the same Fresnel as F0 A + (1 - F0) B above, in one
+//                  integral, exactly. The directions come from GGX (visible normals) or cosine
+//                  sampling and from area sampling of the quad proportional to half uniform,
+//                  half texel luminance (texel_distribution: no samples wasted on black texels),
+//                  balance heuristic. The diffuse term is sampled too: unlike the constant
+//                  lights, int L cos over a texture has no closed form. double. Deterministic:
+//                  every pixel, light, integral (and, for the textured light, iteration) has its
+//                  own seed, so the image is the same whatever the thread count.
+//   error.png      false colour of the relative error of luminance,
+//                      e = |Y_ltc - Y_ref| / max(Y_ref, floor),  floor = 0.01 / exposure,
+//                  on a fixed scale: 0% dark blue, 5% blue, 10% green, 15% yellow, 20% and
+//                  above red. Background and emitters are black.
+//   textured_error.png  (with the textured light) the same for the textured light's contribution
+//                  alone, |Y_ltc,tex - Y_ref,tex| / max(Y_ref,tex, floor).
+//
+// Both renders are tone mapped identically: radiance * exposure, the ACES filmic curve of
+// Narkowicz 2015 per channel, clamp to [0, 1], sRGB encoding. One camera ray through each
+// pixel centre (no antialiasing: tile edges alias, identically in both images).
+//
+// Printed: the time of each render and their ratio; error statistics of the LTC render over the
+// floor pixels whose reference luminance is at least the floor (mean signed and mean, median,
+// 95th percentile and max absolute relative error; mean per tile), the reference's own Monte
+// Carlo noise (relative standard error of Y_ref: mean, median, 95th percentile, max) and the
+// share of pixels where the LTC differs from the reference by more than 3 standard errors (where
+// the difference is the LTC's, not the noise's); the count of non-finite values (expected 0,
+// replaced by black and left out of the statistics). With the textured light, these statistics
+// come three times: for all lights (the images), for the two polygonal lights alone (the same
+// numbers, seeds and images as --no-texture, which renders the scene without the textured
+// light), and for the textured light's contribution alone (the floor is then Y_ref,tex >=
+// 0.01 / exposure). For the textured light the standard error of Y_ref is exact: the
+// luminance of every iteration's RGB value (specular + albedo x diffuse) enters the variance.
+// Exit status 0, or 1 if an image could not be written or read or a value was not finite, 2
+// for bad arguments. A progress bar with an ETA for the reference render goes to stderr.
+//
+// Dependencies: GLM, stb_image_write and stb_image (Debian: libstb-dev, <stb/stb_image_write.h>,
+// <stb/stb_image.h>).
+//
+// Source files (examples/render/): options.hpp (the command line), scene.hpp (floor, materials,
+// camera placement) and lights.hpp (the lights), image.hpp (texture files in, PNGs out, through
+// stb.hpp / stb.cpp) and stained_glass.hpp (the default picture), camera.hpp (what each pixel
+// sees), shade_ltc.hpp and shade_reference.hpp (the two renders), colour.hpp (luminance, tone
+// mapping, false colour), error_stats.hpp (the statistics), threads.hpp (rows on worker threads,
+// progress bar), and this file: the top-level flow.
+#include "camera.hpp"
+#include "colour.hpp"
+#include "error_stats.hpp"
+#include "image.hpp"
+#include "lights.hpp"
+#include "math.hpp"
+#include "options.hpp"
+#include "scene.hpp"
+#include "shade_ltc.hpp"
+#include "shade_reference.hpp"
+#include "stained_glass.hpp"
+#include "threads.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <utility>
+#include <vector>
+
+using namespace render;  // the pieces above
+
+int main(int argc, char** argv) {
+    options opt;
+    if (const int r = parse_args(argc, argv, opt); r != 0) return r == 1 ? 0 : 2;
+    if (opt.threads == 0) opt.threads = std::max(1u, std::thread::hardware_concurrency());
+    const int W = opt.width, H = opt.height;
+    const std::size_t count = static_cast<std::size_t>(W) * H;
+
+    std::error_code ec;
+    const std::filesystem::path out_dir(opt.out);
+    std::filesystem::create_directories(out_dir, ec);
+    if (!std::filesystem::is_directory(out_dir, ec)) {
+        std::fprintf(stderr, "error: cannot create the output directory %s\n", opt.out.c_str());
+        return 1;
+    }
+
+    scene s;
+    double prefilter_seconds = 0;
+    if (opt.textured) {
+        image picture;
+        if (opt.texture.empty())
+            picture = stained_glass(192, 256);
+        else if (!load_image(opt.texture, picture))
+            return 1;
+        const auto t0 = clock_type::now();
+        try {
+            s.add_textured_light(std::move(picture), static_cast<float>(opt.texture_radiance));
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: cannot prefilter the texture: %s\n", e.what());
+            return 1;
+        }
+        prefilter_seconds = seconds_since(t0);
+    }
+    const textured_light* tex = s.textured.get();
+    const std::vector<pixel_hit> hits = trace_camera(s, W, H);
+    std::size_t floor_pixels = 0;
+    for (const auto& h : hits) floor_pixels += h.kind == pixel_hit::floor;
+    std::printf("%d x %d pixels (%zu on the floor), %zu lights (", W, H, floor_pixels, s.lights.size() + (tex ? 1 : 0));
+    for (std::size_t k = 0; k < s.lights.size(); ++k)
+        std::printf("%s%s, %zu vertices", k ? "; " : "", s.lights[k].name, s.lights[k].vertices.size());
+    if (tex)
+        std::printf("; %s, %d x %d texels", tex->name, tex->picture.width, tex->picture.height);
+    std::printf("), %u thread%s\n", opt.threads, opt.threads == 1 ? "" : "s");
+    if (tex)
+        std::printf("textured light: %s, %.2f x %.2f units, white = radiance %g; prefiltered in %.3f s "
+                    "(%d levels)\n",
+                    opt.texture.empty() ? "procedural stained glass" : opt.texture.c_str(), 2.0 * tex->half_width,
+                    2.0 * tex->half_height, opt.texture_radiance, prefilter_seconds, tex->prefiltered->level_count());
+
+    // LTC render: each part timed as the best of 5 runs (it takes milliseconds).
+    std::vector<dvec3> ltc_poly(count), ltc_tex(count, dvec3(0.0)), ltc_img(count);
+    double ltc_seconds = INFINITY, ltc_tex_seconds = tex ? INFINITY : 0.0;
+    for (int run = 0; run < 5; ++run) {
+        const auto t0 = clock_type::now();
+        for_each_row(H, opt.threads, [&](int y) {
+            for (int x = 0; x < W; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * W + x;
+                ltc_poly[i] = dvec3(shade_ltc(s, hits[i]));
+            }
+        });
+        ltc_seconds = std::min(ltc_seconds, seconds_since(t0));
+    }
+    for (int run = 0; tex && run < 5; ++run) {
+        const auto t0 = clock_type::now();
+        for_each_row(H, opt.threads, [&](int y) {
+            for (int x = 0; x < W; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * W + x;
+                ltc_tex[i] = dvec3(shade_ltc_textured(s, hits[i]));
+            }
+        });
+        ltc_tex_seconds = std::min(ltc_tex_seconds, seconds_since(t0));
+    }
+    if (!tex) {
+        std::printf("LTC render:       %9.4f s  (best of 5; %.0f ns of one thread per floor pixel and light)\n",
+                    ltc_seconds,
+                    ltc_seconds * 1e9 * opt.threads / (static_cast<double>(floor_pixels) * s.lights.size()));
+    } else {
+        std::printf("LTC render:       %9.4f s  (best of 5 of each part: polygonal lights %.4f s, %.0f ns of one "
+                    "thread per floor pixel and light;\n"
+                    "                                textured light %.4f s, %.0f ns per floor pixel)\n",
+                    ltc_seconds + ltc_tex_seconds, ltc_seconds,
+                    ltc_seconds * 1e9 * opt.threads / (static_cast<double>(floor_pixels) * s.lights.size()),
+                    ltc_tex_seconds, ltc_tex_seconds * 1e9 * opt.threads / static_cast<double>(floor_pixels));
+    }
+
+    std::size_t ltc_nonfinite = 0, ref_nonfinite = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!finite3(ltc_poly[i])) ++ltc_nonfinite, ltc_poly[i] = dvec3(0.0);
+        if (!finite3(ltc_tex[i])) ++ltc_nonfinite, ltc_tex[i] = dvec3(0.0);
+        ltc_img[i] = ltc_poly[i] + ltc_tex[i];
+    }
+
+    std::vector<std::uint8_t> rgb(count * 3);
+    for (std::size_t i = 0; i < count; ++i) tone_map(ltc_img[i], opt.exposure, &rgb[3 * i]);
+    bool ok = write_png(out_dir / "ltc.png", W, H, rgb);
+
+    if (opt.spp == 0) {
+        std::printf("non-finite values: LTC %zu\n", ltc_nonfinite);
+        return ok && ltc_nonfinite == 0 ? 0 : 1;
+    }
+
+    // Reference render.
+    std::fflush(stdout);  // the progress bar goes to stderr
+    std::vector<reference_pixel> ref(count);
+    const auto t0 = clock_type::now();
+    std::vector<long long> row_cost(static_cast<std::size_t>(H), 0);  // floor pixels per row
+    for (std::size_t i = 0; i < count; ++i)
+        row_cost[i / static_cast<std::size_t>(W)] += hits[i].kind == pixel_hit::floor;
+    for_each_row(
+        H, opt.threads,
+        [&](int y) {
+            for (int x = 0; x < W; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * W + x;
+                ref[i] = shade_reference(s, hits[i], mix_seed(opt.seed, i), opt.spp);
+            }
+        },
+        "reference", &row_cost);
+    const double ref_seconds = seconds_since(t0);
+    if (!tex)
+        std::printf("reference render: %9.4f s  (%d iterations x 2 directions x 2 integrals per pixel and light, "
+                    "%u threads)\n",
+                    ref_seconds, opt.spp, opt.threads);
+    else
+        std::printf("reference render: %9.4f s  (%d iterations x 2 directions x 2 integrals per pixel and polygonal "
+                    "light,\n"
+                    "                                x 1 or 2 integrals (specular; diffuse where albedo > 0) for the "
+                    "textured light, %u threads)\n",
+                    ref_seconds, opt.spp, opt.threads);
+    std::printf("reference / LTC:  %9.0f x\n", ref_seconds / (ltc_seconds + ltc_tex_seconds));
+
+    std::vector<dvec3> ref_poly(count), ref_tex(count), ref_img(count);
+    std::vector<double> var_poly(count), var_tex(count), var_all(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        reference_pixel& p = ref[i];
+        if (!finite3(p.radiance) || !std::isfinite(p.luminance_variance))
+            ++ref_nonfinite, p.radiance = dvec3(0.0), p.luminance_variance = 0;
+        if (!finite3(p.textured) || !std::isfinite(p.textured_variance))
+            ++ref_nonfinite, p.textured = dvec3(0.0), p.textured_variance = 0;
+        ref_poly[i] = p.radiance;
+        ref_tex[i] = p.textured;
+        ref_img[i] = p.radiance + p.textured;
+        var_poly[i] = p.luminance_variance;
+        var_tex[i] = p.textured_variance;
+        var_all[i] = p.luminance_variance + p.textured_variance;  // independent seeds
+    }
+    for (std::size_t i = 0; i < count; ++i) tone_map(ref_img[i], opt.exposure, &rgb[3 * i]);
+    ok = write_png(out_dir / "reference.png", W, H, rgb) && ok;
+
+    // Error images and statistics.
+    const double floor = dark_floor / opt.exposure;
+    const error_stats all = measure_error(hits, ltc_img, ref_img, var_all, floor, rgb);
+    ok = write_png(out_dir / "error.png", W, H, rgb) && ok;
+    if (!tex) {
+        std::printf("\n");
+        print_error(s, all, floor);
+    } else {
+        const error_stats tex_stats = measure_error(hits, ltc_tex, ref_tex, var_tex, floor, rgb);
+        ok = write_png(out_dir / "textured_error.png", W, H, rgb) && ok;
+        const error_stats poly_stats = measure_error(hits, ltc_poly, ref_poly, var_poly, floor, rgb);
+        std::printf("\n=== all lights (ltc.png, reference.png, error.png) ===\n");
+        print_error(s, all, floor);
+        std::printf("\n=== the polygonal lights alone (rectangle + pentagon: the statistics of --no-texture) ===\n");
+        print_error(s, poly_stats, floor);
+        std::printf("\n=== the textured light alone (its contribution to the floor: textured_error.png) ===\n");
+        print_error(s, tex_stats, floor, "Y_ref,tex");
+    }
+    std::printf("non-finite values: LTC %zu, reference %zu\n", ltc_nonfinite, ref_nonfinite);
+    return ok && ltc_nonfinite == 0 && ref_nonfinite == 0 ? 0 : 1;
+}
