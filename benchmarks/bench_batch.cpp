@@ -4,12 +4,13 @@
 // reports items/s (SetItemsProcessed), plus, as counters, the maximum absolute and relative error
 // against the library's double-precision exact closed form.
 //
-// Built three times by CMake: bench_batch (the default target, SSE2 on x86-64) and, where the
-// compiler supports it, bench_batch_avx2 (-march=x86-64-v3: AVX2 + FMA) and
-// bench_batch_avx2_no_math_errno (the same with -fno-math-errno), which exit without running when
-// the CPU lacks AVX2 or FMA. Run them with --benchmark_repetitions=5 and compare medians; the
-// throughput ratio batch / reference is meaningful within one executable (both sides are compiled
-// with the same flags).
+// Built four times by CMake (benchmarks/CMakeLists.txt): bench_batch (the build type's flags: -O3
+// in Release), bench_batch_o2 (-O2), bench_batch_avx2 and bench_batch_o2_avx2 (the same with
+// -march=x86-64-v3, which exit without running where the CPU lacks AVX2 or FMA). Without -march
+// the batch still runs its AVX2 kernel where the CPU has it (run-time dispatch): the rows
+// isa::baseline and isa::avx2 pin the instruction set. Run them with --benchmark_repetitions=5
+// and compare medians; the throughput ratio batch / reference is meaningful within one
+// executable (both sides are compiled with the same flags).
 #include "configurations.hpp"
 #include "reference_shader.hpp"
 
@@ -116,12 +117,16 @@ void BM_library_scalar(benchmark::State& state) {
     report_errors(state, out);
 }
 
-template <typename Policy>
+template <typename Policy, ltc::batch::isa Isa>
 void BM_batch_quads(benchmark::State& state) {
+    if (!ltc::batch::available(Isa)) {
+        state.SkipWithError("instruction set not available on this CPU");
+        return;
+    }
     const auto soa = data().soa();
     std::vector<float> out(kItems);
     for (auto _ : state) {
-        ltc::batch::integrate_quads<Policy>(soa, out.data(), kItems, ltc::sidedness::two_sided);
+        ltc::batch::integrate_quads<Policy>(soa, out.data(), kItems, ltc::sidedness::two_sided, Isa);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -129,8 +134,8 @@ void BM_batch_quads(benchmark::State& state) {
     report_errors(state, out);
 }
 
-// The runtime-n blocked kernel on the same quads (what integrate_ngons runs for n > 8).
-void BM_batch_ngons_blocked(benchmark::State& state) {
+// The runtime-n entry point on the same quads (the edge loop is not unrolled).
+void BM_batch_ngons_runtime_n(benchmark::State& state) {
     const inputs& d = data();
     const auto quad = d.soa();
     const float* xs[4] = {quad.x[0], quad.x[1], quad.x[2], quad.x[3]};
@@ -142,7 +147,7 @@ void BM_batch_ngons_blocked(benchmark::State& state) {
     soa.x = xs, soa.y = ys, soa.z = zs;
     std::vector<float> out(kItems);
     for (auto _ : state) {
-        ltc::batch::integrate_ngons_blocked(soa, out.data(), kItems, ltc::sidedness::two_sided);
+        ltc::batch::integrate_ngons(soa, out.data(), kItems, ltc::sidedness::two_sided);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -166,15 +171,18 @@ void BM_batch_quads_shared_matrix(benchmark::State& state) {
 
 }  // namespace
 
+using ltc::batch::isa;
+using ltc::edge_policy::minimax_rational;
 BENCHMARK(BM_reference_shader);
-BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::minimax_rational);
+BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::exact);
+BENCHMARK_TEMPLATE(BM_library_scalar, minimax_rational);
 BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::polynomial);
-BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::minimax_rational);
-BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::polynomial);
-BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::rational);
-BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::fp16_quadratic);
-BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::exact);
-BENCHMARK(BM_batch_ngons_blocked);
+BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::automatic);
+BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::baseline);
+BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::avx2);
+BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::polynomial, isa::automatic);
+BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::scalar);
+BENCHMARK(BM_batch_ngons_runtime_n);
 BENCHMARK(BM_batch_quads_shared_matrix);
 
 int main(int argc, char** argv) {

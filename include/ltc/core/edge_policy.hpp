@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <type_traits>
+#include <utility>
 
 namespace ltc {
 
@@ -33,6 +34,39 @@ LTC_HOST_DEVICE LTC_INLINE T symmetric_extension(T c, const glm::vec<3, T>& axb,
     const T s = glm::length(axb);
     return s > min_normal<T>() ? pi<T>() / s - p : T(0);  // s = 0, c < 0: see theta_over_sin
 }
+
+/// The element type of V: V itself for a scalar, the lane type for a compiler vector
+/// (ltc/detail/simd.hpp), so that a policy's positive_branch serves both.
+template <typename V, typename = void>
+struct scalar_of {
+    using type = V;
+};
+template <typename V>
+struct scalar_of<V, std::void_t<decltype(std::declval<V&>()[0])>> {
+    using type = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<V&>()[0])>>;
+};
+template <typename V>
+using scalar_of_t = typename scalar_of<V>::type;
+
+/// A policy made of a branch-free fit f of theta / sin(theta) on c >= 0, extended to c < 0 by
+/// symmetric_extension. Fit::evaluate_positive_branch(y, f) takes y = 1 - |c| as a scalar or a
+/// SIMD vector (ltc/detail/simd.hpp: the batch kernels evaluate it lane-wise), by reference: a
+/// vector wider than the baseline instruction set may not be passed by value to a function
+/// compiled for it.
+template <typename Fit>
+struct symmetric_fit {
+    template <typename T>
+    LTC_HOST_DEVICE LTC_INLINE static T positive_branch(T y) {
+        T f;
+        Fit::evaluate_positive_branch(y, f);
+        return f;
+    }
+
+    template <typename T>
+    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
+        return symmetric_extension(c, axb, positive_branch(T(1) - glm::abs(c)));
+    }
+};
 
 /// Whether Policy fits f on c >= 0 alone (Policy::positive_branch(1 - c)): edge_integral_z then
 /// needs only the z component of a x b there.
@@ -64,21 +98,17 @@ struct exact {
 /// Degree-9 polynomial in y = 1 - c, interpolating f(c) = acos(c) / sqrt(1 - c^2) at the
 /// Chebyshev nodes of [0, 1] (near-minimax: 1.3e-8 relative error in exact arithmetic, below
 /// float rounding), extended to c < 0 by the symmetry f(c) = pi / s - f(-c).
-struct polynomial {
-    /// f(|c|) for y = 1 - |c|, branch-free (shared with the vectorized batch path).
-    /// Estrin's scheme: four levels of independent multiply-adds instead of a chain of nine.
-    template <typename T>
-    LTC_HOST_DEVICE LTC_INLINE static T positive_branch(T y) {
-        const T y2 = y * y, y4 = y2 * y2;
-        const T a01 = T(0.99999999) + T(0.333335381) * y, a23 = T(0.133266572) + T(0.0579778015) * y;
-        const T a45 = T(0.0201634898) + T(0.030059176) * y, a67 = T(-0.0335529978) + T(0.0509757585) * y;
-        const T a89 = T(-0.0325916887) + T(0.0111628242) * y;
-        return (a01 + a23 * y2) + ((a45 + a67 * y2) + a89 * y4) * y4;
-    }
-
-    template <typename T>
-    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
-        return detail::symmetric_extension(c, axb, positive_branch(T(1) - glm::abs(c)));
+struct polynomial : detail::symmetric_fit<polynomial> {
+    /// f(|c|) for y = 1 - |c|, branch-free. Estrin's scheme: four levels of independent
+    /// multiply-adds instead of a chain of nine.
+    template <typename V>
+    LTC_HOST_DEVICE LTC_INLINE static void evaluate_positive_branch(const V& y, V& f) {
+        using T = detail::scalar_of_t<V>;
+        const V y2 = y * y, y4 = y2 * y2;
+        const V a01 = T(0.99999999) + T(0.333335381) * y, a23 = T(0.133266572) + T(0.0579778015) * y;
+        const V a45 = T(0.0201634898) + T(0.030059176) * y, a67 = T(-0.0335529978) + T(0.0509757585) * y;
+        const V a89 = T(-0.0325916887) + T(0.0111628242) * y;
+        f = (a01 + a23 * y2) + ((a45 + a67 * y2) + a89 * y4) * y4;
     }
 };
 
@@ -88,17 +118,13 @@ struct polynomial {
 /// extended to c < 0 by f(c) = pi / s - f(-c). Five multiply-adds and one division per edge,
 /// against the degree-9 polynomial's nine multiply-adds and two products: the fastest
 /// float-accurate policy.
-struct minimax_rational {
-    template <typename T>
-    LTC_HOST_DEVICE LTC_INLINE static T positive_branch(T y) {
-        const T p = T(0.999999965867) + y * (T(-0.44145776482) + y * (T(0.0170912151505) + y * T(0.00123519700345)));
-        const T q = T(1) + y * (T(-0.774792977409) + y * T(0.142038957683));
-        return p / q;
-    }
-
-    template <typename T>
-    LTC_HOST_DEVICE LTC_INLINE static T theta_over_sin(T c, const glm::vec<3, T>& axb) {
-        return detail::symmetric_extension(c, axb, positive_branch(T(1) - glm::abs(c)));
+struct minimax_rational : detail::symmetric_fit<minimax_rational> {
+    template <typename V>
+    LTC_HOST_DEVICE LTC_INLINE static void evaluate_positive_branch(const V& y, V& f) {
+        using T = detail::scalar_of_t<V>;
+        const V p = T(0.999999965867) + y * (T(-0.44145776482) + y * (T(0.0170912151505) + y * T(0.00123519700345)));
+        const V q = T(1) + y * (T(-0.774792977409) + y * T(0.142038957683));
+        f = p / q;
     }
 };
 

@@ -1,0 +1,64 @@
+// ltc/detail/batch_simd.hpp -- the batch kernel (ltc/detail/batch_simd_kernel.inc) compiled once
+// per instruction set of ltc/detail/simd.hpp, and its entry points: run_baseline, and run_avx2
+// (compiled for AVX2 + FMA whatever the translation unit's flags; call it only where
+// ltc::simd::avx2::supported()).
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/core/edge_policy.hpp>
+#include <ltc/detail/math.hpp>
+#include <ltc/detail/simd.hpp>
+#include <ltc/shading/batch_soa.hpp>
+
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+namespace ltc {
+namespace batch {
+namespace detail {
+
+/// Whether the SIMD kernel evaluates Policy lane-wise: a branch-free fit on c >= 0 with the
+/// symmetric extension (edge_policy::minimax_rational, edge_policy::polynomial, or a user policy
+/// built on ltc::detail::symmetric_fit); the others run the scalar path.
+template <typename Policy, typename T>
+inline constexpr bool simd_policy = LTC_SIMD && (std::is_same_v<T, float> || std::is_same_v<T, double>) &&
+                                    std::is_base_of_v<ltc::detail::symmetric_fit<Policy>, Policy>;
+
+#if LTC_SIMD
+
+namespace baseline {
+using namespace ltc::simd::baseline;
+#define LTC_SIMD_FN LTC_SIMD_BASELINE_FN
+#include <ltc/detail/batch_simd_kernel.inc>
+#undef LTC_SIMD_FN
+}  // namespace baseline
+
+/// Items [0, returned) through the baseline kernel (16-byte vectors).
+template <typename Policy, std::size_t N, typename T>
+std::size_t run_baseline(const matrices<T>& mats, std::size_t n, const T* const* x, const T* const* y,
+                         const T* const* z, T* out, std::size_t count, bool two_sided) {
+    return baseline::integrate_items<Policy, N>(mats, n, x, y, z, out, count, two_sided);
+}
+
+#if LTC_SIMD_AVX2
+namespace avx2 {
+using namespace ltc::simd::avx2;
+#define LTC_SIMD_FN LTC_SIMD_AVX2_FN
+#include <ltc/detail/batch_simd_kernel.inc>
+#undef LTC_SIMD_FN
+}  // namespace avx2
+
+/// Items [0, returned) through the AVX2 kernel (32-byte vectors, FMA).
+template <typename Policy, std::size_t N, typename T>
+LTC_SIMD_AVX2_TARGET std::size_t run_avx2(const matrices<T>& mats, std::size_t n, const T* const* x, const T* const* y,
+                                          const T* const* z, T* out, std::size_t count, bool two_sided) {
+    return avx2::integrate_items<Policy, N>(mats, n, x, y, z, out, count, two_sided);
+}
+#endif
+
+#endif  // LTC_SIMD
+
+}  // namespace detail
+}  // namespace batch
+}  // namespace ltc

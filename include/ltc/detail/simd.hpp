@@ -1,0 +1,149 @@
+// ltc/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
+// vector types, the few primitives that need an instruction set (rsqrt, rcp), and the run-time
+// choice between instruction sets.
+//
+// The layer is the compiler's own vector extension (GCC and Clang: `vector_size`), the one that
+// libstdc++'s <experimental/simd> is written in. Why not that, xsimd or Highway: the batch must
+// run at AVX2 width in a build without -march (run-time dispatch) from headers alone.
+//   - std::experimental::simd (GCC 12) fixes its ABI when the header is first included: inside a
+//     function compiled for AVX2 by __attribute__((target)), fixed_size_simd<float, 8> still
+//     compiles to pairs of 128-bit instructions (checked with GCC 12.2: no ymm register);
+//   - xsimd enables its AVX2 batch only when the translation unit is compiled with -mavx2;
+//   - Highway's run-time dispatch needs its library (libhwy) linked and the user's file
+//     re-included once per target.
+// Plain vector types, by contrast, compile to 256-bit instructions in any function compiled for
+// AVX2, whatever the flags of the translation unit. Each instruction set has a namespace below
+// (baseline: 16-byte vectors, SSE2 on x86-64; avx2: 32-byte vectors, AVX2 + FMA) whose functions
+// carry that instruction set's target attribute; the kernel (ltc/detail/batch_simd_kernel.inc)
+// is compiled once in each.
+//
+// LTC_SIMD is 1 where the layer is available (GCC or Clang, not CUDA device compilation, not
+// disabled by defining LTC_NO_SIMD before including ltc); elsewhere the batch API runs its scalar
+// path item by item. LTC_SIMD_AVX2 is 1 where the AVX2 kernel is compiled (x86-64).
+#pragma once
+
+#if !defined(LTC_NO_SIMD) && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
+#define LTC_SIMD 1
+#else
+#define LTC_SIMD 0
+#endif
+
+#if LTC_SIMD && defined(__x86_64__)
+#define LTC_SIMD_AVX2 1
+#include <immintrin.h>
+#else
+#define LTC_SIMD_AVX2 0
+#endif
+
+#if LTC_SIMD
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+// Functions of each instruction set's namespace: always inlined into the entry point compiled
+// for that instruction set (ltc/detail/batch_simd.hpp).
+#define LTC_SIMD_BASELINE_FN inline __attribute__((always_inline))
+#if LTC_SIMD_AVX2
+#define LTC_SIMD_AVX2_TARGET __attribute__((target("avx2,fma")))
+#define LTC_SIMD_AVX2_FN inline __attribute__((always_inline, target("avx2,fma")))
+#endif
+
+namespace ltc {
+namespace simd {
+
+/// The vector of W lanes of T, and the integer vector of the same lanes that comparisons return
+/// (all bits set where true).
+template <typename T, std::size_t Bytes>
+struct vector_types;
+template <std::size_t Bytes>
+struct vector_types<float, Bytes> {
+    typedef float vf __attribute__((vector_size(Bytes)));
+    typedef std::int32_t vi __attribute__((vector_size(Bytes)));
+    static constexpr std::size_t width = Bytes / sizeof(float);
+};
+template <std::size_t Bytes>
+struct vector_types<double, Bytes> {
+    typedef double vf __attribute__((vector_size(Bytes)));
+    typedef std::int64_t vi __attribute__((vector_size(Bytes)));
+    static constexpr std::size_t width = Bytes / sizeof(double);
+};
+
+namespace baseline {
+
+template <typename T>
+using types = vector_types<T, 16>;
+
+/// 1 / sqrt(x) for normal x > 0 (callers mask the other lanes). float on x86-64: the hardware
+/// estimate (relative error <= 1.5 * 2^-12) and one Newton step y (3/2 - x y^2 / 2), which
+/// squares the error (measured in tests/test_batch.cpp); double, and other targets: 1 / sqrt.
+template <typename V>
+LTC_SIMD_BASELINE_FN V rsqrt(V x) {
+#if defined(__SSE2__)
+    if constexpr (sizeof(x[0]) == 4) {
+        const V y = (V)_mm_rsqrt_ps((__m128)x);
+        return y * (1.5f - (0.5f * x) * (y * y));
+    } else {
+        return 1.0 / (V)_mm_sqrt_pd((__m128d)x);
+    }
+#else
+    V r;
+    for (std::size_t k = 0; k < sizeof(V) / sizeof(x[0]); ++k) r[k] = 1 / std::sqrt(x[k]);
+    return r;
+#endif
+}
+
+/// A positive number within 1.5 * 2^-12 of 1 / x (float on x86-64) or 1 / x itself, for x != 0:
+/// used where only the direction of the scaled vector matters.
+template <typename V>
+LTC_SIMD_BASELINE_FN V rcp_estimate(V x) {
+#if defined(__SSE2__)
+    if constexpr (sizeof(x[0]) == 4) return (V)_mm_rcp_ps((__m128)x);
+#endif
+    return 1 / x;
+}
+
+}  // namespace baseline
+
+#if LTC_SIMD_AVX2
+namespace avx2 {
+
+template <typename T>
+using types = vector_types<T, 32>;
+
+template <typename V>
+LTC_SIMD_AVX2_FN V rsqrt(V x) {
+    if constexpr (sizeof(x[0]) == 4) {
+        const V y = (V)_mm256_rsqrt_ps((__m256)x);
+        return y * (1.5f - (0.5f * x) * (y * y));
+    } else {
+        return 1.0 / (V)_mm256_sqrt_pd((__m256d)x);
+    }
+}
+
+template <typename V>
+LTC_SIMD_AVX2_FN V rcp_estimate(V x) {
+    if constexpr (sizeof(x[0]) == 4) return (V)_mm256_rcp_ps((__m256)x);
+    return 1 / x;
+}
+
+/// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once.
+inline bool supported() {
+#if defined(__AVX2__) && defined(__FMA__)
+    return true;
+#else
+    static const bool yes = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    }();
+    return yes;
+#endif
+}
+
+}  // namespace avx2
+#endif
+
+}  // namespace simd
+}  // namespace ltc
+
+#endif  // LTC_SIMD
