@@ -83,7 +83,7 @@ inline constexpr std::size_t small_polygon = 8;
 template <typename T, bool clip, typename Vertices, typename EdgeFn>
 LTC_HOST_DEVICE LTC_INLINE bool for_each_small_unit_edge(const Vertices& vertices, std::size_t n, EdgeFn& edge) {
     using vec3 = glm::vec<3, T>;
-    vec3 u[small_polygon];
+    vec3 u[small_polygon]{};  // all written below for i < n; zeroed so that GCC -O2 sees it (-Wmaybe-uninitialized)
     bool at_origin = false;
     std::size_t above = 0;
     for (std::size_t i = 0; i < n; ++i) {

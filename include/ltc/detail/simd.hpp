@@ -103,6 +103,19 @@ LTC_SIMD_BASELINE_FN V rcp_estimate(V x) {
     return 1 / x;
 }
 
+/// Whether every lane of the comparison result m is true.
+template <typename VI>
+LTC_SIMD_BASELINE_FN bool all(VI m) {
+#if defined(__SSE2__)
+    if constexpr (sizeof(m[0]) == 4) return _mm_movemask_ps((__m128)m) == 0xf;
+    else return _mm_movemask_pd((__m128d)m) == 0x3;
+#else
+    for (std::size_t k = 0; k < sizeof(VI) / sizeof(m[0]); ++k)
+        if (!m[k]) return false;
+    return true;
+#endif
+}
+
 }  // namespace baseline
 
 #if LTC_SIMD_AVX2
@@ -125,6 +138,12 @@ template <typename V>
 LTC_SIMD_AVX2_FN V rcp_estimate(V x) {
     if constexpr (sizeof(x[0]) == 4) return (V)_mm256_rcp_ps((__m256)x);
     return 1 / x;
+}
+
+template <typename VI>
+LTC_SIMD_AVX2_FN bool all(VI m) {
+    if constexpr (sizeof(m[0]) == 4) return _mm256_movemask_ps((__m256)m) == 0xff;
+    else return _mm256_movemask_pd((__m256d)m) == 0xf;
 }
 
 /// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once.
