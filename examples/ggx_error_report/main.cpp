@@ -43,15 +43,16 @@
 //
 // Source files (examples/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
 // LTC estimate with each method), statistics.hpp (relative errors and their summaries),
-// parallel_for.hpp (worker threads), and this file: the command line, the ground truth and the
-// report.
+// parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
+// horizon.cpp, clipless.cpp, fit_sizes.cpp), and this file: the command line, the ground truth,
+// the first section and the list of every configuration.
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "parallel_for.hpp"
+#include "report.hpp"
 #include "statistics.hpp"
 
 #include <ltc/fitting/brdf/ggx.hpp>
-#include <ltc/fitting/fit.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
@@ -107,9 +108,6 @@ int main(int argc, char** argv) {
         }
     }
     const auto t_start = std::chrono::steady_clock::now();
-    const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-    };
 
     std::vector<config> grid = make_grid();
     std::size_t straddling = 0;
@@ -186,172 +184,11 @@ int main(int argc, char** argv) {
         const stats s = summarize(e);
         std::printf("  (the other %zu configurations, GT < 1e-3 albedo: exact |LTC - GT| / albedo <= %.2e)\n", s.count, s.max);
     }
-    std::printf("\n2. By roughness (alpha = roughness^2): mean / p95 / max relative error\n");
-    std::printf("  %-9s", "roughness");
-    for (int m = 0; m < method_count; ++m) std::printf(" | %-22s", method_names[m]);
-    std::printf("\n");
-    for (int r = 0; r < 5; ++r) {
-        std::printf("  %-9.2f", roughnesses[r]);
-        for (int m = 0; m < method_count; ++m) {
-            const stats s = summarize(rel_errors(grid, ev, m, [&](const config& c) { return c.rough == r; }));
-            std::printf(" | %5.1f%% %6.1f%% %7.1f%%", 100 * s.mean, 100 * s.p95, 100 * s.max);
-        }
-        std::printf("\n");
-    }
-    std::printf("\n3. By view angle\n");
-    for (int t = 0; t < 4; ++t) {
-        std::printf("  theta_v %2.0f", thetas[t]);
-        for (int m = 0; m < method_count; ++m) {
-            const stats s = summarize(rel_errors(grid, ev, m, [&](const config& c) { return c.theta == t; }));
-            std::printf(" | %5.1f%% %6.1f%% %7.1f%%", 100 * s.mean, 100 * s.p95, 100 * s.max);
-        }
-        std::printf("\n");
-    }
-    std::printf("\n4. Lights entirely above vs partly below the horizon (mean / p95 / max relative error)\n");
-    for (int below = 0; below < 2; ++below) {
-        std::printf("  %-11s", below ? "straddling" : "above");
-        for (int m = 0; m < method_count; ++m) {
-            const stats s = summarize(rel_errors(grid, ev, m, [&](const config& c) { return c.straddles == bool(below); }));
-            std::printf(" | %5.1f%% %6.1f%% %7.1f%%", 100 * s.mean, 100 * s.p95, 100 * s.max);
-        }
-        std::printf("\n");
-    }
-    std::printf("\n   Clip order on the straddling configurations, by view angle: mean signed relative error\n"
-                "   (LTC - GT) / GT (the bias), mean |error|, and how often clip-first is the closer one\n");
-    std::printf("  %-10s %5s | %-26s | %-26s | %-26s | %s\n", "theta_v", "n", "exact: bias  mean|e|", "clip-first: bias  mean|e|",
-                "clip-once: bias  mean|e|", "clip-first closer");
-    for (int t = -1; t < 4; ++t) {
-        double bias[method_count] = {}, mean_abs[method_count] = {};
-        std::size_t n = 0, closer = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            const auto& c = grid[i];
-            if (!c.straddles || !significant(c, ev.albedo[i]) || (t >= 0 && c.theta != t)) continue;
-            ++n;
-            for (int m = 0; m < method_count; ++m) {
-                const double e = (ev.value[m][i] - c.gt.mean) / c.gt.mean;
-                bias[m] += e;
-                mean_abs[m] += std::abs(e);
-            }
-            closer += std::abs(ev.value[clip_first][i] - c.gt.mean) < std::abs(ev.value[exact][i] - c.gt.mean);
-        }
-        if (n == 0) continue;
-        char label[32];
-        std::snprintf(label, sizeof label, t < 0 ? "all" : "%.0f deg", t < 0 ? 0.0 : thetas[t]);
-        std::printf("  %-10s %5zu |", label, n);
-        for (int m : {int(exact), int(clip_first), int(clip_once)})
-            std::printf(" %+8.2f%% %8.2f%%        |", 100 * bias[m] / double(n), 100 * mean_abs[m] / double(n));
-        std::printf(" %zu of %zu\n", closer, n);
-    }
-    {
-        double worst = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i)
-            if (significant(grid[i], ev.albedo[i]))
-                worst = std::max(worst, std::abs(ev.value[clip_once][i] - ev.value[clip_first][i]) / grid[i].gt.mean);
-        std::printf("  clip-once vs clip-first (the second clip, in LTC space): max difference %.3f%% of GT\n", 100 * worst);
-    }
-    {
-        // Lights entirely below the horizon (GT = 0): what the exact order lets leak through.
-        // A 2:1 rectangle of half-diagonal s/d = 0.15 centred at elevation -10 deg, azimuth
-        // 0 (the view side) or 180 (the mirror side).
-        double worst[2] = {0, 0};
-        int worst_t[2] = {0, 0}, worst_r[2] = {0, 0};
-        for (int t = 0; t < 4; ++t)
-            for (int r = 0; r < 5; ++r)
-                for (int side = 0; side < 2; ++side) {
-                    const double az = side ? 180 * deg : 0.0, el = -10 * deg;
-                    config c{t, r, 0, 0, 0, {}, true, {}};
-                    c.vertices = make_light(0, 0.15, dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)));
-                    const double albedo = shipped(std::cos(thetas[t] * deg), roughnesses[r]).magnitude;
-                    const double leak = ltc_estimate(c, shipped, exact) / albedo;
-                    if (leak > worst[side]) worst[side] = leak, worst_t[side] = t, worst_r[side] = r;
-                    if (ltc_estimate(c, shipped, clip_first) != 0.0) std::printf("  (clip-first leaked: a bug)\n");
-                }
-        std::printf("  lights entirely below the horizon (GT = 0), exact order: LTC / albedo up to %.2e (view side, theta_v %.0f,\n"
-                    "  roughness %.2f) and %.2e (mirror side, theta_v %.0f, roughness %.2f); clip-first: exactly 0\n",
-                    worst[0], thetas[worst_t[0]], roughnesses[worst_r[0]], worst[1], thetas[worst_t[1]], roughnesses[worst_r[1]]);
-    }
-    std::printf("\n5. By placement and size (exact | clip-first | sphere)\n");
-    for (int pl = 0; pl < 4; ++pl)
-        for (int sz = 0; sz < 3; ++sz) {
-            char label[64];
-            std::snprintf(label, sizeof label, "%-6s s/d=%.1f", placement_names[pl], sizes[sz]);
-            std::printf("  %-15s", label);
-            for (int m : {int(exact), int(clip_first), int(sphere)}) {
-                const stats s = summarize(rel_errors(grid, ev, m, [&](const config& c) { return c.placement == pl && c.size == sz; }));
-                std::printf(" | %5.1f%% %6.1f%% %7.1f%%", 100 * s.mean, 100 * s.p95, 100 * s.max);
-            }
-            std::printf("\n");
-        }
-
-    std::printf("\n6. Clipless vs exact LTC clipping (same table): |sphere - exact| / exact, the cost of the sphere\n"
-                "   approximation alone, on the straddling configurations and on all (it is exact when M^-1 P and\n"
-                "   its sphere are both above the LTC's horizon, which an elongated M^-1 P often is not)\n");
-    for (int m : {int(sphere), int(sphere_tab)}) {
-        for (int r = -1; r < 5; ++r) {
-            std::vector<double> e, e_all;
-            for (std::size_t i = 0; i < grid.size(); ++i) {
-                if (r >= 0 && grid[i].rough != r) continue;
-                const double x = ev.value[exact][i];
-                if (!(x >= 1e-3 * ev.albedo[i])) continue;
-                const double d = std::abs(ev.value[m][i] - x) / x;
-                e_all.push_back(d);
-                if (grid[i].straddles) e.push_back(d);
-            }
-            char label[64];
-            if (r < 0)
-                std::snprintf(label, sizeof label, "%s all", method_names[m]);
-            else
-                std::snprintf(label, sizeof label, "%s r=%.2f", method_names[m], roughnesses[r]);
-            const stats s = summarize(e), sa = summarize(e_all);
-            std::printf("  %-18s straddling n=%3zu mean %6.2f%% p95 %6.2f%% max %7.2f%% | all n=%3zu max %7.2f%%\n", label,
-                        s.count, 100 * s.mean, 100 * s.p95, 100 * s.max, sa.count, 100 * sa.max);
-        }
-    }
-    {
-        double worst = 0;
-        std::size_t wi = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            const double x = ev.value[exact][i];
-            if (!(x >= 1e-3 * ev.albedo[i])) continue;
-            const double d = std::abs(ev.value[sphere][i] - x) / x;
-            if (d > worst) worst = d, wi = i;
-        }
-        const auto& c = grid[wi];
-        std::printf("  worst sphere case: theta_v %.0f, roughness %.2f, %s, s/d %.1f, %s: exact %.4g sphere %.4g GT %.4g\n",
-                    thetas[c.theta], roughnesses[c.rough], shape_names[c.shape], sizes[c.size], placement_names[c.placement],
-                    ev.value[exact][wi], ev.value[sphere][wi], c.gt.mean);
-    }
-
-    std::printf("\n7. Fit error vs table size and fitting time (ltc::fit::fit_table<ggx>, default options,\n"
-                "   %u threads; exact clipping), relative error against the same ground truth\n", threads);
-    std::printf("  %-8s %10s %10s | %7s %7s %8s | %s\n", "size", "bytes", "fit time", "mean", "p95", "max", "by roughness: mean");
-    for (int n : fit_sizes) {
-        ltc::fit::options fo;
-        fo.size = n;
-        fo.threads = threads;
-        const auto t0 = std::chrono::steady_clock::now();
-        const ltc::fit::table tab = ltc::fit::fit_table<ltc::brdf::ggx>(fo);
-        const double secs = seconds_since(t0);
-        const std::vector<float> data = tab.packed();
-        const ltc::ltc_table view(data.data(), n, n);
-        const fetch_fn f = [&](double c, double r) { return view.fetch<double>(c, r); };
-        const evaluation e = evaluate(grid, f, false);
-        const stats s = summarize(rel_errors(grid, e, exact, any));
-        std::printf("  %2dx%-5d %10zu %9.2fs | %6.2f%% %6.2f%% %7.2f%% |", n, n, data.size() * sizeof(float), secs, 100 * s.mean,
-                    100 * s.p95, 100 * s.max);
-        for (int r = 0; r < 5; ++r)
-            std::printf(" %5.1f%%", 100 * summarize(rel_errors(grid, e, exact, [&](const config& c) { return c.rough == r; })).mean);
-        std::printf("\n");
-    }
-    {
-        const stats s = summarize(rel_errors(grid, ev, exact, any));
-        const int w = ltc::ggx::table.width(), h = ltc::ggx::table.height();
-        std::printf("  %2dx%-5d %10zu %10s | %6.2f%% %6.2f%% %7.2f%% |", w, h, std::size_t(w) * h * 6 * sizeof(float), "shipped",
-                    100 * s.mean, 100 * s.p95, 100 * s.max);
-        for (int r = 0; r < 5; ++r)
-            std::printf(" %5.1f%%", 100 * summarize(rel_errors(grid, ev, exact, [&](const config& c) { return c.rough == r; })).mean);
-        std::printf("\n");
-    }
+    print_by_roughness_and_view(grid, ev);
+    print_horizon(grid, ev, shipped);
+    print_by_placement_and_size(grid, ev);
+    print_clipless_vs_exact(grid, ev);
+    print_fit_sizes(grid, ev, fit_sizes, threads);
 
     if (list) {
         std::printf("\n8. Every configuration: GT +- std error, then each method's relative error\n");

@@ -1,0 +1,34 @@
+// ggx_error_report/report.hpp -- the sections of the report after the first (main.cpp's file
+// comment), each printed by one function from the grid, its ground truth and the LTC estimates.
+#pragma once
+
+#include "grid.hpp"
+#include "ltc_estimate.hpp"
+
+#include <chrono>
+#include <vector>
+
+namespace ggx_error_report {
+
+inline double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// 2. and 3.: the relative errors by roughness and by view angle (breakdowns.cpp).
+void print_by_roughness_and_view(const std::vector<config>& grid, const evaluation& ev);
+
+/// 4.: lights entirely above vs partly below the horizon, the clip order, and lights entirely
+/// below it (horizon.cpp).
+void print_horizon(const std::vector<config>& grid, const evaluation& ev, const fetch_fn& shipped);
+
+/// 5.: the relative errors by placement and size (breakdowns.cpp).
+void print_by_placement_and_size(const std::vector<config>& grid, const evaluation& ev);
+
+/// 6.: the clipless methods against exact LTC clipping (clipless.cpp).
+void print_clipless_vs_exact(const std::vector<config>& grid, const evaluation& ev);
+
+/// 7.: tables fitted here at the given sizes against the same ground truth (fit_sizes.cpp).
+void print_fit_sizes(const std::vector<config>& grid, const evaluation& ev, const std::vector<int>& fit_sizes,
+                     unsigned threads);
+
+}  // namespace ggx_error_report
