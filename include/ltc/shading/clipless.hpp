@@ -26,7 +26,7 @@
 // This header joins them: form_factor(_signed) of a polygon, integrate(_signed) of a transformed
 // clamped cosine (the sphere of M^-1 P).
 //
-// Where it breaks down (measured in tests/test_clipless.cpp and examples/ggx_error_report.cpp):
+// Where it breaks down (measured in tests/test_clipless.cpp and examples/ggx_error_report/):
 // the approximation is exact when the polygon and its sphere are both entirely above the
 // horizon (both integrals are then F.z; the sphere is above iff cos(omega) >= sin(sigma), i.e.
 // F.z >= |F|^(3/2)) or both entirely below (both 0), and for caps. Otherwise the sphere

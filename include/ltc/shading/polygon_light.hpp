@@ -18,7 +18,7 @@
 // the clipless approximation) and I_ltc the integral of the LTC
 // distribution over the polygon (eq. 3), its coefficients (M^-1, magnitude, fresnel) taken from
 // the GGX table at (cos theta_v, roughness). magnitude I_ltc approximates int_P rho cos (the
-// fit's error, measured by examples/ggx_error_report.cpp against ltc/reference/ground_truth.hpp).
+// fit's error, measured by examples/ggx_error_report/ against ltc/reference/ground_truth.hpp).
 //
 // The pieces, each of which can be included on its own:
 //   ltc/shading/shading_frame.hpp            the local frame (T1, T2, N) and cos theta_v

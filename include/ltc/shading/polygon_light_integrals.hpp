@@ -20,7 +20,7 @@
 //                        the part of the polygon above the surface; nothing leaks from below.
 //   sphere_analytic,     Hill's clipless approximation (ltc/shading/clipless.hpp) for both terms: no
 //   sphere_table         polygon clipping at all; the analytic or tabulated sphere form factor.
-// Which is better where, measured by examples/ggx_error_report.cpp (shipped 64 x 64 GGX table
+// Which is better where, measured by examples/ggx_error_report/ (shipped 64 x 64 GGX table
 // against the Monte Carlo ground truth, 720 configurations, 195 of them with a significant
 // light straddling the horizon):
 //   - lights entirely above the horizon: ltc_space and shading_first are identical (the first

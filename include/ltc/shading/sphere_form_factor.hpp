@@ -39,7 +39,7 @@
 // (the sign of H folds into |c|). The note's form cancels O(sigma) terms down to an O(sigma^3)
 // result, which loses everything in float for small spheres near the horizon; here every term
 // is O(sigma^3) and S is evaluated by its series for small phi, so the absolute error stays a
-// few ulps of sin^3(sigma) for every sigma (tests/test_clipless.cpp).
+// few ulps of sin^3(sigma) for every sigma (tests/test_sphere_form_factor.cpp).
 #pragma once
 
 #include <ltc/config.hpp>

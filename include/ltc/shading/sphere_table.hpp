@@ -20,7 +20,7 @@
 // derivative over the cell (1D: the error e = f - interpolant has e' = f' - mean slope, so
 // |e| <= h osc(f') / 4; the tensor product adds the two directions). With the oscillations
 // evaluated cell by cell this bounds the error by 8.1e-3 sin^3(sigma) <= 8.1e-3 f; the
-// measured maximum is 2.3e-3 (tests/test_clipless.cpp checks both, cell by cell). No uniform
+// measured maximum is 2.3e-3 (tests/test_sphere_form_factor.cpp checks both, cell by cell). No uniform
 // bound through second derivatives exists: near t = 1, y = 1 (a hemisphere-sized sphere
 // just touching the horizon) q_tt grows like cos(sigma)^(-3/2). The table is 4 KiB of float,
 // built once on first use from the analytic formula (fill_sphere_table(), which is also what a
