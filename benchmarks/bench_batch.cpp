@@ -11,6 +11,7 @@
 // isa::baseline and isa::avx2 pin the instruction set. Run them with --benchmark_repetitions=5
 // and compare medians; the throughput ratio batch / reference is meaningful within one
 // executable (both sides are compiled with the same flags).
+#include "bench_main.hpp"
 #include "configurations.hpp"
 #include "reference_shader.hpp"
 
@@ -185,19 +186,4 @@ BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::scalar);
 BENCHMARK(BM_batch_ngons_runtime_n);
 BENCHMARK(BM_batch_quads_shared_matrix);
 
-int main(int argc, char** argv) {
-#if defined(LTC_BENCH_NEEDS_X86_64_V3)
-    // This executable is compiled with -march=x86-64-v3: refuse to run on a CPU without AVX2/FMA
-    // (checked before any benchmark code runs; nothing before main uses vector code paths).
-    __builtin_cpu_init();
-    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
-        std::puts("bench_batch_avx2: this CPU lacks AVX2 or FMA; skipped");
-        return 0;
-    }
-#endif
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+LTC_BENCHMARK_MAIN();

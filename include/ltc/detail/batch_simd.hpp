@@ -1,7 +1,7 @@
-// ltc/detail/batch_simd.hpp -- the batch kernel (ltc/detail/batch_simd_kernel.inc) compiled once
-// per instruction set of ltc/detail/simd.hpp, and its entry points: run_baseline, and run_avx2
-// (compiled for AVX2 + FMA whatever the translation unit's flags; call it only where
-// ltc::simd::avx2::supported()).
+// ltc/detail/batch_simd.hpp -- the batch kernels (ltc/detail/batch_simd_lanes.inc and the
+// kernels built on it) compiled once per instruction set of ltc/detail/simd.hpp, and their entry
+// points: run_baseline, and run_avx2 (compiled for AVX2 + FMA whatever the translation unit's
+// flags; call it only where ltc::simd::avx2::supported()).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -9,6 +9,7 @@
 #include <ltc/detail/math.hpp>
 #include <ltc/detail/simd.hpp>
 #include <ltc/shading/batch_soa.hpp>
+#include <ltc/shading/table.hpp>
 
 #include <cstddef>
 #include <limits>
@@ -25,12 +26,26 @@ template <typename Policy, typename T>
 inline constexpr bool simd_policy = LTC_SIMD && (std::is_same_v<T, float> || std::is_same_v<T, double>) &&
                                     std::is_base_of_v<ltc::detail::symmetric_fit<Policy>, Policy>;
 
+/// The light of a shading batch (ltc/shading/batch_shading.hpp), the same for every lane:
+/// its n world-space vertices (x[k], y[k], z[k]), radiance and sidedness.
+template <typename T>
+struct shading_light {
+    const T* x;
+    const T* y;
+    const T* z;
+    std::size_t n;
+    T radiance[3];
+    bool two_sided;
+};
+
 #if LTC_SIMD
 
 namespace baseline {
 using namespace ltc::simd::baseline;
 #define LTC_SIMD_FN LTC_SIMD_BASELINE_FN
+#include <ltc/detail/batch_simd_lanes.inc>
 #include <ltc/detail/batch_simd_kernel.inc>
+#include <ltc/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN
 }  // namespace baseline
 
@@ -45,7 +60,9 @@ std::size_t run_baseline(const matrices<T>& mats, std::size_t n, const T* const*
 namespace avx2 {
 using namespace ltc::simd::avx2;
 #define LTC_SIMD_FN LTC_SIMD_AVX2_FN
+#include <ltc/detail/batch_simd_lanes.inc>
 #include <ltc/detail/batch_simd_kernel.inc>
+#include <ltc/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN
 }  // namespace avx2
 
@@ -55,7 +72,22 @@ LTC_SIMD_AVX2_TARGET std::size_t run_avx2(const matrices<T>& mats, std::size_t n
                                           const T* const* z, T* out, std::size_t count, bool two_sided) {
     return avx2::integrate_items<Policy, N>(mats, n, x, y, z, out, count, two_sided);
 }
+
+/// Points [0, returned) through the AVX2 shading kernel.
+template <typename Policy, typename T>
+LTC_SIMD_AVX2_TARGET std::size_t run_shade_avx2(const ltc_table& table, const shading_light<T>& light,
+                                                const shading_points<T>& points, const shading_results<T>& out,
+                                                std::size_t count) {
+    return avx2::shade_items<Policy, T>(table, light, points, out, count);
+}
 #endif
+
+/// Points [0, returned) through the baseline shading kernel.
+template <typename Policy, typename T>
+std::size_t run_shade_baseline(const ltc_table& table, const shading_light<T>& light,
+                               const shading_points<T>& points, const shading_results<T>& out, std::size_t count) {
+    return baseline::shade_items<Policy, T>(table, light, points, out, count);
+}
 
 #endif  // LTC_SIMD
 

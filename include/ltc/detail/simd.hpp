@@ -1,6 +1,6 @@
 // ltc/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
-// vector types, the few primitives that need an instruction set (rsqrt, rcp), and the run-time
-// choice between instruction sets.
+// vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, all), and the
+// run-time choice between instruction sets.
 //
 // The layer is the compiler's own vector extension (GCC and Clang: `vector_size`), the one that
 // libstdc++'s <experimental/simd> is written in. Why not that, xsimd or Highway: the batch must
@@ -103,6 +103,19 @@ LTC_SIMD_BASELINE_FN V rcp_estimate(V x) {
     return 1 / x;
 }
 
+/// sqrt(x), correctly rounded.
+template <typename V>
+LTC_SIMD_BASELINE_FN V sqrt(V x) {
+#if defined(__SSE2__)
+    if constexpr (sizeof(x[0]) == 4) return (V)_mm_sqrt_ps((__m128)x);
+    else return (V)_mm_sqrt_pd((__m128d)x);
+#else
+    V r;
+    for (std::size_t k = 0; k < sizeof(V) / sizeof(x[0]); ++k) r[k] = std::sqrt(x[k]);
+    return r;
+#endif
+}
+
 /// Whether every lane of the comparison result m is true.
 template <typename VI>
 LTC_SIMD_BASELINE_FN bool all(VI m) {
@@ -138,6 +151,12 @@ template <typename V>
 LTC_SIMD_AVX2_FN V rcp_estimate(V x) {
     if constexpr (sizeof(x[0]) == 4) return (V)_mm256_rcp_ps((__m256)x);
     return 1 / x;
+}
+
+template <typename V>
+LTC_SIMD_AVX2_FN V sqrt(V x) {
+    if constexpr (sizeof(x[0]) == 4) return (V)_mm256_sqrt_ps((__m256)x);
+    else return (V)_mm256_sqrt_pd((__m256d)x);
 }
 
 template <typename VI>

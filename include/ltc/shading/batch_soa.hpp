@@ -1,7 +1,7 @@
-// ltc/shading/batch_soa.hpp -- the structure-of-arrays input of the batch API
-// (ltc/shading/batch.hpp): many polygons, vertex coordinates in one array per vertex and axis,
-// and each item's inverse matrix M^-1 (eq. 11 is integrated over M^-1 P) in nine arrays or
-// shared by all items.
+// ltc/shading/batch_soa.hpp -- the structure-of-arrays inputs and outputs of the batch API:
+// many polygons for ltc/shading/batch.hpp (vertex coordinates in one array per vertex and axis,
+// and each item's inverse matrix M^-1, eq. 11 being integrated over M^-1 P, in nine arrays or
+// shared by all items), and many shading points for ltc/shading/batch_shading.hpp.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -53,6 +53,33 @@ struct ngon_soa {
     const T* const* x = nullptr;
     const T* const* y = nullptr;
     const T* const* z = nullptr;
+};
+
+/// Shading points for ltc::batch::shade_polygon_light (ltc/shading/batch_shading.hpp): point i is
+/// P = (px[i], py[i], pz[i]), its normal N, its direction towards the eye V (neither needs to be
+/// normalized), its roughness (alpha = roughness^2), its specular colour F0 = (f0[0][i], f0[1][i],
+/// f0[2][i]) and diffuse albedo, all in world space, as for ltc::shade_polygon_light.
+template <typename T>
+struct shading_points {
+    const T* px = nullptr;
+    const T* py = nullptr;
+    const T* pz = nullptr;
+    const T* nx = nullptr;
+    const T* ny = nullptr;
+    const T* nz = nullptr;
+    const T* vx = nullptr;
+    const T* vy = nullptr;
+    const T* vz = nullptr;
+    const T* roughness = nullptr;
+    const T* f0[3] = {};
+    const T* albedo[3] = {};
+};
+
+/// Where the shading batches write: specular[c][i] and diffuse[c][i], channel c of item i.
+template <typename T>
+struct shading_results {
+    T* specular[3] = {};
+    T* diffuse[3] = {};
 };
 
 }  // namespace batch

@@ -1,0 +1,142 @@
+// ltc/shading/batch_shading.hpp -- GGX shading of polygonal lights in batches, shaped as a
+// renderer's loops: one light over many shading points (a pass over a G-buffer, a light baker's
+// texels), and many quad lights over one point.
+//
+//   ltc::batch::shading_points<float> pts;     // SoA: P, N, V, roughness, F0, albedo per point
+//   ltc::batch::shading_results<float> res;    // SoA: specular and diffuse RGB per point
+//   ltc::batch::shade_polygon_light(pts, radiance, vertices, n, ltc::sidedness::one_sided, res, count);
+//
+// Item i gets what ltc::shade_polygon_light (ltc/shading/polygon_light.hpp) gives for it with the
+// GGX table and horizon_clipping::ltc_space, up to rounding (tests/test_batch_shading.cpp derives
+// the tolerance): the frame, the table fetch, the form factor E and the LTC integral of eq. (3),
+// specular = radiance (F0 magnitude + (1 - F0) fresnel) I and diffuse = albedo radiance E. One
+// point per SIMD lane (ltc/detail/batch_simd_shading.inc), with the instruction sets of
+// ltc/shading/batch.hpp (ltc::batch::isa, run-time dispatch); points the kernel hands back and
+// the last count % width go through the scalar function. Policy: as in ltc/shading/batch.hpp
+// (minimax_rational by default; policies without a SIMD kernel shade every point with the scalar
+// function).
+//
+// shade_quad_lights: one point, count quad lights (SoA vertices and radiance): the frame and the
+// fetch once, the lights moved into the local frame, then their two integrals through the kernel
+// of ltc/shading/batch.hpp; out receives each light's own contribution.
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/core/edge_policy.hpp>
+#include <ltc/core/sidedness.hpp>
+#include <ltc/detail/batch_simd.hpp>
+#include <ltc/shading/batch.hpp>
+#include <ltc/shading/batch_soa.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace ltc {
+namespace batch {
+
+namespace detail {
+
+template <typename T>
+inline glm::vec<3, T> item(const T* const (&c)[3], std::size_t i) {
+    return glm::vec<3, T>(c[0][i], c[1][i], c[2][i]);
+}
+
+template <typename T>
+inline void write(const shading_results<T>& out, std::size_t i, const polygon_light_result<T>& r) {
+    for (int c = 0; c < 3; ++c) out.specular[c][i] = r.specular[c], out.diffuse[c][i] = r.diffuse[c];
+}
+
+}  // namespace detail
+
+/// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
+/// and the given radiance, like ltc::shade_polygon_light item by item.
+template <typename Policy = edge_policy::minimax_rational, typename T>
+void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& radiance,
+                         const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
+                         std::size_t count, isa which = isa::automatic) {
+    std::vector<T> lx(n), ly(n), lz(n);
+    for (std::size_t k = 0; k < n; ++k) lx[k] = vertices[k].x, ly[k] = vertices[k].y, lz[k] = vertices[k].z;
+    const detail::shading_light<T> light{lx.data(), ly.data(), lz.data(), n, {radiance.x, radiance.y, radiance.z},
+                                         side == sidedness::two_sided};
+    std::size_t vectorized = 0;
+    if constexpr (detail::simd_policy<Policy, T>) {
+#if LTC_SIMD
+        if (n >= 3) switch (resolve(which)) {
+                case isa::baseline:
+                    vectorized = detail::run_shade_baseline<Policy>(ggx::table, light, points, out, count);
+                    break;
+#if LTC_SIMD_AVX2
+                case isa::avx2: vectorized = detail::run_shade_avx2<Policy>(ggx::table, light, points, out, count); break;
+#endif
+                default: break;
+            }
+#endif
+    }
+    (void)which;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i < vectorized && !std::isnan(out.specular[0][i])) continue;
+        const glm::vec<3, T> P(points.px[i], points.py[i], points.pz[i]), N(points.nx[i], points.ny[i], points.nz[i]);
+        const glm::vec<3, T> V(points.vx[i], points.vy[i], points.vz[i]);
+        detail::write(out, i,
+                      ltc::shade_polygon_light<Policy>(P, N, V, points.roughness[i], detail::item(points.f0, i),
+                                                       detail::item(points.albedo, i), radiance, vertices, n, side));
+    }
+}
+
+/// count quad lights: vertex k of light i is (x[k][i], y[k][i], z[k][i]) in world space, its
+/// radiance (radiance[0][i], radiance[1][i], radiance[2][i]).
+template <typename T>
+struct quad_lights {
+    const T* x[4] = {};
+    const T* y[4] = {};
+    const T* z[4] = {};
+    const T* radiance[3] = {};
+};
+
+/// Shades one point (as ltc::shade_polygon_light takes it) with each of count quad lights: out
+/// receives light i's specular and diffuse at item i (sum them for the point's radiance).
+template <typename Policy = edge_policy::minimax_rational, typename T>
+void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
+                       const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,
+                       sidedness side, const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {
+    using vec3 = glm::vec<3, T>;
+    const shading_frame<T> frame = make_shading_frame(N, V);
+    const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
+    const vec3 brdf = F0 * lobe.magnitude + (vec3(T(1)) - F0) * lobe.fresnel;
+    // The lights in the local frame (frame.to_local(p - P)) block by block, then E (M = I) and
+    // I_ltc (M = the lobe's M^-1) through the quad kernel.
+    constexpr std::size_t block = 256;
+    T x[4][block], y[4][block], z[4][block], E[block], I[block];
+    for (std::size_t base = 0; base < count; base += block) {
+        const std::size_t b = count - base < block ? count - base : block;
+        quad_soa<T> soa;
+        for (std::size_t k = 0; k < 4; ++k) {
+            for (std::size_t j = 0; j < b; ++j) {
+                const vec3 d = vec3(lights.x[k][base + j], lights.y[k][base + j], lights.z[k][base + j]) - P;
+                x[k][j] = glm::dot(d, frame.t1), y[k][j] = glm::dot(d, frame.t2), z[k][j] = glm::dot(d, frame.n);
+            }
+            soa.x[k] = x[k], soa.y[k] = y[k], soa.z[k] = z[k];
+        }
+        soa.m_inv = matrices<T>::same_for_all(glm::mat<3, 3, T>(T(1)));
+        integrate_quads<Policy>(soa, E, b, side, which);
+        soa.m_inv = matrices<T>::same_for_all(lobe.m_inv);
+        integrate_quads<Policy>(soa, I, b, side, which);
+        for (std::size_t j = 0; j < b; ++j) {
+            const vec3 radiance = detail::item(lights.radiance, base + j);
+            polygon_light_result<T> r;
+            if (frame.valid) {
+                r.specular = radiance * brdf * I[j];
+                r.diffuse = albedo * radiance * E[j];
+            }
+            detail::write(out, base + j, r);
+        }
+    }
+}
+
+}  // namespace batch
+}  // namespace ltc

@@ -1,0 +1,82 @@
+// The shading kernel's lane stages (ltc/detail/batch_simd_shading.inc) run on their own, for each
+// instruction set, so that tests can compare them with the scalar functions they mirror and shade
+// with the very frame and coefficients the kernel used.
+#pragma once
+
+#include <ltc/shading/batch_shading.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace ltc_test {
+
+/// Inputs: N (3 arrays), V (3 arrays), roughness. Outputs per point: t1, t2, n (9 arrays),
+/// cos_theta_v, the 6 table channels, and whether the frame hands the point back.
+struct lane_stage_results {
+    std::vector<float> frame[10];  // t1 xyz, t2 xyz, n xyz, cos_theta_v
+    std::vector<float> channel[6];
+    std::vector<std::int32_t> fallback;
+};
+
+#define LTC_TEST_LANE_STAGES(ns, attributes)                                                                       \
+    attributes inline void lane_stages_##ns(const std::vector<float> (&in)[7], lane_stage_results& out,           \
+                                            std::size_t count) {                                                   \
+        using namespace ltc::batch::detail::ns;                                                                    \
+        constexpr std::size_t W = types<float>::width;                                                             \
+        for (auto& v : out.frame) v.assign(count, 0.0f);                                                           \
+        for (auto& v : out.channel) v.assign(count, 0.0f);                                                         \
+        out.fallback.assign(count, 0);                                                                             \
+        for (std::size_t i = 0; i + W <= count; i += W) {                                                          \
+            const lane_frame<float> f({load(&in[0][i]), load(&in[1][i]), load(&in[2][i])},                        \
+                                      {load(&in[3][i]), load(&in[4][i]), load(&in[5][i])});                       \
+            const lane_coefficients<float> c(ltc::ggx::table, f.cos_theta_v, load(&in[6][i]));                    \
+            for (int k = 0; k < 3; ++k) {                                                                          \
+                __builtin_memcpy(&out.frame[k][i], &f.t1[k], sizeof f.t1[k]);                                      \
+                __builtin_memcpy(&out.frame[3 + k][i], &f.t2[k], sizeof f.t2[k]);                                  \
+                __builtin_memcpy(&out.frame[6 + k][i], &f.n[k], sizeof f.n[k]);                                    \
+            }                                                                                                      \
+            __builtin_memcpy(&out.frame[9][i], &f.cos_theta_v, sizeof f.cos_theta_v);                              \
+            for (int k = 0; k < 6; ++k) __builtin_memcpy(&out.channel[k][i], &c.value[k], sizeof c.value[k]);      \
+            __builtin_memcpy(&out.fallback[i], &f.fallback, sizeof f.fallback);                                    \
+        }                                                                                                          \
+    }
+
+#if LTC_SIMD
+LTC_TEST_LANE_STAGES(baseline, )
+#if LTC_SIMD_AVX2
+LTC_TEST_LANE_STAGES(avx2, LTC_SIMD_AVX2_TARGET)
+#endif
+#endif
+
+/// The lane stages of `which` (baseline or avx2; the caller checks ltc::batch::available).
+inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7], lane_stage_results& out,
+                        std::size_t count) {
+#if LTC_SIMD_AVX2
+    if (which == ltc::batch::isa::avx2) return lane_stages_avx2(in, out, count);
+#endif
+#if LTC_SIMD
+    lane_stages_baseline(in, out, count);
+#endif
+    (void)which, (void)in, (void)out, (void)count;
+}
+
+/// The shading kernel of `which` alone: points [0, returned) written, NaN in specular red where
+/// it hands a point back to the scalar function.
+template <typename Policy>
+std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
+                           const ltc::batch::shading_points<float>& points,
+                           const ltc::batch::shading_results<float>& out, std::size_t count) {
+#if LTC_SIMD_AVX2
+    if (which == ltc::batch::isa::avx2)
+        return ltc::batch::detail::run_shade_avx2<Policy>(ltc::ggx::table, light, points, out, count);
+#endif
+#if LTC_SIMD
+    return ltc::batch::detail::run_shade_baseline<Policy>(ltc::ggx::table, light, points, out, count);
+#else
+    (void)which, (void)light, (void)points, (void)out, (void)count;
+    return 0;
+#endif
+}
+
+}  // namespace ltc_test

@@ -1,0 +1,248 @@
+// ltc/shading/batch_shading.hpp against ltc::shade_polygon_light, item by item, for every
+// instruction set this machine runs: one light over many points (the shading kernel) and many
+// quad lights over one point.
+//
+// Tolerance. The kernel's frame and table fetch are compared with the scalar ones in
+// tests/test_batch_lanes.cpp; here the scalar function shades each point with the very frame and
+// coefficients the kernel computed (tests/support/batch_lanes.hpp runs the same lane code), so
+// only the two integrals differ: each by at most the tolerance derived in tests/test_batch.cpp
+// (ltc_test::clip_tolerance of the light in the local frame: the scalar path divides p - P by
+// its largest coordinate before the rotation, the kernel does not, which moves the directions by
+// a few u, within that derivation). specular = radiance (F0 magnitude + (1 - F0) fresnel) I and
+// diffuse = albedo radiance E then differ by the factor times the integral's tolerance, plus the
+// factor's 4 u relative rounding (the same operations on both sides, up to FMA contraction).
+// Points the kernel hands back, and the tail, are shaded by the scalar function: equal exactly.
+#include "support/batch_lanes.hpp"
+#include "support/clip_comparison.hpp"
+#include "support/rng.hpp"
+
+#include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/polygon_light.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using Policy = ltc::edge_policy::minimax_rational;
+constexpr double kU = 0x1.0p-24;
+
+// count random shading points in SoA (P near the origin, N and V random, V mostly in front).
+struct points_soa {
+    std::vector<float> a[16];  // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb
+    explicit points_soa(std::size_t count, std::uint64_t seed) {
+        ltc_test::rng g(seed);
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec3 P(g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-0.5, 0.5));
+            const glm::dvec3 N = g.direction() * g.uniform(0.5, 2.0);
+            glm::dvec3 V = g.direction();
+            if (glm::dot(V, N) < 0 && i % 8 != 0) V = -V;  // some views from below the surface
+            if (i % 101 == 0) V = N;                        // normal incidence exactly
+            const double v[16] = {P.x, P.y, P.z, N.x, N.y, N.z, V.x, V.y, V.z, g.uniform(0.02, 1.0),
+                                  g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform()};
+            for (int k = 0; k < 16; ++k) a[k].push_back(float(v[k]));
+        }
+    }
+    glm::vec3 vec(int c, std::size_t i) const { return glm::vec3(a[c][i], a[c + 1][i], a[c + 2][i]); }
+    ltc::batch::shading_points<float> view() const {
+        ltc::batch::shading_points<float> p;
+        p.px = a[0].data(), p.py = a[1].data(), p.pz = a[2].data(), p.nx = a[3].data(), p.ny = a[4].data();
+        p.nz = a[5].data(), p.vx = a[6].data(), p.vy = a[7].data(), p.vz = a[8].data(), p.roughness = a[9].data();
+        for (int c = 0; c < 3; ++c) p.f0[c] = a[10 + c].data(), p.albedo[c] = a[13 + c].data();
+        return p;
+    }
+};
+
+struct results_soa {
+    std::vector<float> c[6];
+    explicit results_soa(std::size_t count) {
+        for (auto& v : c) v.assign(count, -1.0f);
+    }
+    ltc::batch::shading_results<float> view() {
+        ltc::batch::shading_results<float> r;
+        for (int k = 0; k < 3; ++k) r.specular[k] = c[k].data(), r.diffuse[k] = c[3 + k].data();
+        return r;
+    }
+    ltc::polygon_light_result<float> at(std::size_t i) const {
+        ltc::polygon_light_result<float> r;
+        for (int k = 0; k < 3; ++k) r.specular[k] = c[k][i], r.diffuse[k] = c[3 + k][i];
+        return r;
+    }
+};
+
+// The tolerance of the file comment for a point shaded in `frame` with `lobe`.
+ltc::polygon_light_result<double> tolerance(const ltc::shading_frame<float>& frame, const ltc::ltc_coefficients<float>& lobe,
+                                            const glm::vec3& P, const glm::vec3& F0, const glm::vec3& albedo,
+                                            const glm::vec3& radiance, const std::vector<glm::vec3>& light,
+                                            const ltc::polygon_light_result<float>& value) {
+    std::vector<glm::vec3> local;
+    for (const auto& p : light) local.push_back(frame.to_local(p - P));
+    const double tol_e = ltc_test::clip_tolerance<Policy>(glm::mat3(1.0f), local);
+    const double tol_i = ltc_test::clip_tolerance<Policy>(lobe.m_inv, local);
+    ltc::polygon_light_result<double> t;
+    for (int c = 0; c < 3; ++c) {
+        const double brdf = std::abs(double(F0[c]) * lobe.magnitude + (1 - double(F0[c])) * lobe.fresnel);
+        t.specular[c] = double(radiance[c]) * brdf * tol_i + 4 * kU * std::abs(value.specular[c]);
+        t.diffuse[c] = double(albedo[c]) * double(radiance[c]) * tol_e + 4 * kU * std::abs(value.diffuse[c]);
+    }
+    return t;
+}
+
+std::size_t violations(const ltc::polygon_light_result<float>& got, const ltc::polygon_light_result<float>& want,
+                       const ltc::polygon_light_result<double>& tol) {
+    std::size_t v = 0;
+    for (int c = 0; c < 3; ++c) {
+        v += !(std::abs(double(got.specular[c]) - want.specular[c]) <= tol.specular[c]);
+        v += !(std::abs(double(got.diffuse[c]) - want.diffuse[c]) <= tol.diffuse[c]);
+    }
+    return v;
+}
+
+}  // namespace
+
+TEST_CASE("batch shading of one light matches shade_polygon_light point by point", "[batch][shading]") {
+    const std::size_t count = 1031;  // not a multiple of any width: the tail runs
+    const points_soa pts(count, 12);
+    ltc_test::rng g(13);
+    const glm::vec3 radiance(3.0f, 2.0f, 1.0f);
+    for (const std::size_t n : {3u, 4u, 5u, 7u})
+        for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
+            for (const auto isa : {ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
+                if (!ltc::batch::available(isa)) continue;
+                const auto light = ltc_test::random_polygon(g, n, true, n % 2 == 0);
+                // The kernel alone (NaN where it hands a point back), then the public function.
+                std::vector<float> lx, ly, lz;
+                for (const auto& p : light) lx.push_back(p.x), ly.push_back(p.y), lz.push_back(p.z);
+                const ltc::batch::detail::shading_light<float> sl{lx.data(), ly.data(), lz.data(), n,
+                                                                  {radiance.x, radiance.y, radiance.z},
+                                                                  side == ltc::sidedness::two_sided};
+                results_soa kernel(count), out(count);
+                const std::size_t vectorized = ltc_test::shading_kernel<Policy>(isa, sl, pts.view(), kernel.view(), count);
+                ltc::batch::shade_polygon_light<Policy>(pts.view(), radiance, light.data(), n, side, out.view(), count, isa);
+                std::vector<float> stage_in[7];
+                for (int k = 0; k < 7; ++k) stage_in[k] = pts.a[3 + k];
+                ltc_test::lane_stage_results stages;
+                ltc_test::lane_stages(isa, stage_in, stages, count);
+                std::size_t bad = 0, handed_back = 0, crossing = 0;
+                for (std::size_t i = 0; i < count; ++i) {
+                    const glm::vec3 P = pts.vec(0, i), F0 = pts.vec(10, i), albedo = pts.vec(13, i);
+                    const auto got = out.at(i);
+                    if (i >= vectorized || std::isnan(kernel.c[0][i])) {
+                        handed_back += i < vectorized;
+                        const auto want = ltc::shade_polygon_light<Policy>(P, pts.vec(3, i), pts.vec(6, i), pts.a[9][i], F0,
+                                                                           albedo, radiance, light.data(), n, side);
+                        CHECK(got.specular == want.specular);
+                        CHECK(got.diffuse == want.diffuse);
+                        continue;
+                    }
+                    ltc::shading_frame<float> frame;
+                    frame.t1 = glm::vec3(stages.frame[0][i], stages.frame[1][i], stages.frame[2][i]);
+                    frame.t2 = glm::vec3(stages.frame[3][i], stages.frame[4][i], stages.frame[5][i]);
+                    frame.n = glm::vec3(stages.frame[6][i], stages.frame[7][i], stages.frame[8][i]);
+                    frame.cos_theta_v = stages.frame[9][i];
+                    ltc::ltc_coefficients<float> lobe;
+                    lobe.m_inv = glm::mat3(0.0f);
+                    lobe.m_inv[0][0] = stages.channel[0][i], lobe.m_inv[0][2] = stages.channel[1][i];
+                    lobe.m_inv[2][0] = stages.channel[2][i], lobe.m_inv[2][2] = stages.channel[3][i];
+                    lobe.m_inv[1][1] = 1.0f;
+                    lobe.magnitude = stages.channel[4][i], lobe.fresnel = stages.channel[5][i];
+                    const auto want =
+                        ltc::shade_polygon_light<Policy>(frame, lobe, P, F0, albedo, radiance, light.data(), n, side);
+                    const auto tol = tolerance(frame, lobe, P, F0, albedo, radiance, light, want);
+                    const std::size_t v = violations(got, want, tol);
+                    CAPTURE(static_cast<int>(isa), n, side == ltc::sidedness::two_sided, i);
+                    CAPTURE(got.specular.x, want.specular.x, tol.specular.x, got.diffuse.x, want.diffuse.x, tol.diffuse.x);
+                    CHECK(v == 0);
+                    bad += v;
+                    bool above = false, below = false;
+                    for (const auto& p : light) {
+                        const float z = frame.to_local(p - P).z;
+                        above = above || z >= 0, below = below || z < 0;
+                    }
+                    crossing += above && below;
+                }
+                CAPTURE(static_cast<int>(isa), n, bad, handed_back, crossing);
+                CHECK(handed_back < count / 50);  // V = N exactly is the kernel's (Duff's tangent)
+                CHECK(crossing > count / 10);     // the horizon clipping is exercised
+            }
+}
+
+TEST_CASE("batch shading: degenerate points and lights give the scalar function's values", "[batch][shading]") {
+    const std::size_t count = 64;
+    points_soa pts(count, 5);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i % 8 == 1) pts.a[3][i] = pts.a[4][i] = pts.a[5][i] = 0.0f;  // N = 0
+        if (i % 8 == 2) pts.a[6][i] = pts.a[7][i] = pts.a[8][i] = 0.0f;  // V = 0
+        if (i % 8 == 3) pts.a[0][i] = -1.0f, pts.a[1][i] = 0.0f, pts.a[2][i] = 1.0f;  // P on a vertex
+        if (i % 8 == 4) pts.a[0][i] *= 1e25f;                              // far away
+        if (i % 8 == 5) pts.a[9][i] = -3.0f;                               // roughness clamped to 0
+    }
+    const std::vector<glm::vec3> light = {{-1, 0, 1}, {1, 0, 1}, {1, 1, 1.5f}, {-1, 1, 1.5f}};
+    for (const auto isa : {ltc::batch::isa::scalar, ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
+        if (!ltc::batch::available(isa)) continue;
+        for (const std::size_t n : {2u, 4u}) {
+            results_soa out(count);
+            ltc::batch::shade_polygon_light<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
+                                                    ltc::sidedness::two_sided, out.view(), count, isa);
+            for (std::size_t i = 0; i < count; ++i) {
+                const auto want = ltc::shade_polygon_light<Policy>(pts.vec(0, i), pts.vec(3, i), pts.vec(6, i), pts.a[9][i],
+                                                                   pts.vec(10, i), pts.vec(13, i), glm::vec3(1.0f),
+                                                                   light.data(), n, ltc::sidedness::two_sided);
+                const auto got = out.at(i);
+                CAPTURE(static_cast<int>(isa), n, i, got.specular.x, want.specular.x, got.diffuse.x, want.diffuse.x);
+                for (int c = 0; c < 3; ++c) REQUIRE(std::isfinite(got.specular[c]));
+                if (n < 3 || i % 8 == 1 || i % 8 == 3) {  // nothing to shade: zeros, as the scalar function
+                    CHECK(got.specular == glm::vec3(0.0f));
+                    CHECK(got.diffuse == glm::vec3(0.0f));
+                    CHECK(want.specular == glm::vec3(0.0f));
+                } else if (i % 8 == 2 || i % 8 == 4) {  // handed back to the scalar function
+                    CHECK(got.specular == want.specular);
+                    CHECK(got.diffuse == want.diffuse);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("batch shading of many quad lights matches shade_polygon_light light by light", "[batch][shading]") {
+    const std::size_t count = 517;
+    ltc_test::rng g(21);
+    std::vector<float> v[15];
+    std::vector<std::vector<glm::vec3>> quads;
+    for (std::size_t j = 0; j < count; ++j) {
+        quads.push_back(ltc_test::random_polygon(g, 4, true, j % 2 == 0));
+        for (int k = 0; k < 4; ++k) {
+            const glm::vec3 p = quads.back()[static_cast<std::size_t>(k)];
+            v[k].push_back(p.x), v[4 + k].push_back(p.y), v[8 + k].push_back(p.z);
+        }
+        for (int c = 0; c < 3; ++c) v[12 + c].push_back(float(g.uniform(0.5, 4)));
+    }
+    ltc::batch::quad_lights<float> lights;
+    for (int k = 0; k < 4; ++k) lights.x[k] = v[k].data(), lights.y[k] = v[4 + k].data(), lights.z[k] = v[8 + k].data();
+    for (int c = 0; c < 3; ++c) lights.radiance[c] = v[12 + c].data();
+    const glm::vec3 P(0.1f, -0.2f, 0.05f), N(0.2f, 0.1f, 1.0f), V(0.7f, -0.3f, 0.5f), F0(0.9f, 0.6f, 0.3f), albedo(0.5f);
+    for (const float roughness : {0.1f, 0.6f})
+        for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
+            for (const auto isa : {ltc::batch::isa::scalar, ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
+                if (!ltc::batch::available(isa)) continue;
+                results_soa out(count);
+                ltc::batch::shade_quad_lights<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(), count, isa);
+                const ltc::shading_frame<float> frame = ltc::make_shading_frame(N, V);
+                const auto lobe = ltc::ggx::fetch(frame.cos_theta_v, roughness);
+                std::size_t bad = 0;
+                for (std::size_t j = 0; j < count; ++j) {
+                    const glm::vec3 radiance(v[12][j], v[13][j], v[14][j]);
+                    const auto want = ltc::shade_polygon_light<Policy>(P, N, V, roughness, F0, albedo, radiance,
+                                                                       quads[j].data(), 4, side);
+                    const auto tol = tolerance(frame, lobe, P, F0, albedo, radiance, quads[j], want);
+                    bad += violations(out.at(j), want, tol);
+                }
+                CAPTURE(static_cast<int>(isa), roughness, side == ltc::sidedness::two_sided);
+                CHECK(bad == 0);
+            }
+}
