@@ -83,13 +83,14 @@ TEST_CASE("cube: each face subtends 4 pi / 6, and every distribution integrates 
                 sum_d += face_d;
                 sum_f += face_f;
                 bound_d += rounding_bound(form_of(id), q, transformed_input_error(m_inv, used_d, f, ud), ud, face_d);
-                bound_f += rounding_bound(form_of(id), q, transformed_input_error(m_inv, used_f, f, uf), uf, face_f);
+                bound_f += rounding_bound(form_of(id), q, transformed_input_error(m_inv, used_f, f, uf), uf, face_f,
+                                          default_factor_error<float>(id));
                 if (nm.name == std::string("identity")) {
                     const double od = closed_form<double>(id, f), of = closed_form<float>(id, f);
                     sum_od += od;
                     sum_of += of;
                     bound_od += rounding_bound(form_of(id), f, {}, ud, od);
-                    bound_of += rounding_bound(form_of(id), f, {}, uf, of);
+                    bound_of += rounding_bound(form_of(id), f, {}, uf, of, default_factor_error<float>(id));
                 }
             }
             const char* distribution = dist_names[id];

@@ -37,7 +37,7 @@ void check_original(int id, const poly_t& p, const ltc_test::brute_force_result<
     const double closed = closed_form<T>(id, p);
     const double brute = bf.value[id];
     // tolerance = quadrature estimate + first-order rounding bound of the closed form
-    const double bound = rounding_bound(form_of(id), p, {}, u, brute);
+    const double bound = rounding_bound(form_of(id), p, {}, u, brute, default_factor_error<T>(id));
     const double tol = bf.error[id] + bound;
     const std::string polygon = str(p);
     const char* distribution = dist_names[id];

@@ -89,10 +89,11 @@ struct transformed_check {
         for (int c = 0; c < 2; ++c) {
             const auto& d = constructions[c];
             const dmat3 used(d.inverse_matrix());
+            const double fit = default_factor_error<T>(id);
             const double bound =
-                rounding_bound(form_of(id), q, transformed_input_error(m_inv, used, tp.v, u), u, over_p.value[id]);
+                rounding_bound(form_of(id), q, transformed_input_error(m_inv, used, tp.v, u), u, over_p.value[id], fit);
             const double bound_r = rounding_bound(
-                form_of(id), qr, transformed_input_error(m_inv, used, reversed(tp.v), u), u, over_p.value[id]);
+                form_of(id), qr, transformed_input_error(m_inv, used, reversed(tp.v), u), u, over_p.value[id], fit);
             const double closed = d.integrate(v.data(), v.size());
             const double signed_value = d.integrate_signed(v.data(), v.size());
             const double signed_reversed = d.integrate_signed(vr.data(), vr.size());

@@ -4,12 +4,15 @@
 
 #include "support/polygon_references.hpp"
 
+#include <ltc/core/clamped_cosine.hpp>
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace ltc_test::polygon_integration {
@@ -45,7 +48,10 @@ namespace ltc_test::polygon_integration {
 //     |a| |b -+ a| <= sqrt 2 |a x b|); s = |a x b| by 8 s (6 + dot and sqrt 2); theta = atan2(s, c)
 //     by theta (8 c s / theta + 3 s / theta + 1) <= 12 theta; the unit vector (a x b) / s keeps
 //     6 (its perpendicular part) + 2 (length rounding); division and product 2: <= 22 theta,
-//     times kappa for safety on long edges;
+//     times kappa for safety on long edges. With a fitted factor theta / sin(theta) (the default
+//     edge_policy::automatic is minimax_rational in float), t = f(c) (a x b).z: f errs by its own
+//     relative bound F (minimax_rational: 4.1e-8 + 41 u, tests/test_edge_policies.cpp), the z
+//     component of stable_cross by 6, the product by 1: <= (F / u + 7) theta, times kappa too;
 //   - Arvo's second-moment edge term (a x b).z / s |b - a| (a + b).z / |a + b| (<= |b - a|
 //     <= theta): the first factor errs by 6 + 8 + 1 = 15, |b - a| by 3 |b - a| relative, plus 4
 //     absolute from the length errors of a and b, the third factor by 1 + 3 + 1 = 5, two
@@ -76,6 +82,20 @@ inline form form_of(int id) {
     }
 }
 
+/// factor_error of rounding_bound for distribution id in T: the relative error bound, in units of
+/// u, of the fitted edge factor clamped_cosine<T> uses by default (0 where it is exact).
+template <typename T>
+double default_factor_error(int id) {
+    using policy = typename ltc::clamped_cosine<T>::EdgePolicy;
+    if constexpr (std::is_same_v<policy, ltc::edge_policy::exact>) {
+        return 0;
+    } else {
+        static_assert(std::is_same_v<policy, ltc::edge_policy::minimax_rational>, "a bound for this policy");
+        const double u = std::numeric_limits<T>::epsilon() / 2;
+        return form_of(id) == form::cosine ? 4.1e-8 / u + 41 : 0;
+    }
+}
+
 inline double angle(const dvec3& a, const dvec3& b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
 inline double kappa(double theta) { return theta > 1e-8 ? theta / std::sin(theta) : 1.0; }
 
@@ -90,7 +110,10 @@ struct bound_parts {
 
 /// q: the polygon in D_o space, in double; d: input direction errors per vertex in units of u
 /// (empty: exact input), to which `normalize` is added for the normalization of the vertices.
-inline bound_parts rounding_parts(form f, const poly_t& q, const std::vector<double>& d, double normalize) {
+/// factor_error: the relative error bound of a fitted theta / sin(theta) in units of u (0: the
+/// exact policy's atan2).
+inline bound_parts rounding_parts(form f, const poly_t& q, const std::vector<double>& d, double normalize,
+                                  double factor_error = 0) {
     std::vector<unit_vertex> in;
     for (std::size_t i = 0; i < q.size(); ++i)
         in.push_back({glm::normalize(q[i]), (d.empty() ? 0.0 : d[i]) + normalize});
@@ -125,7 +148,7 @@ inline bound_parts rounding_parts(form f, const poly_t& q, const std::vector<dou
         const double th = angle(a, b), k = kappa(th);
         region += rho * (w[i].delta + w[(i + 1) % m].delta) * th * k / 2;
         if (f == form::cosine || f == form::cosine_unclipped) {
-            terms += 22 * th * k;
+            terms += (factor_error > 0 ? factor_error + 7 : 22) * th * k;
             sum_abs += th;
         }
         if (f == form::squared) {
@@ -154,9 +177,11 @@ inline bound_parts rounding_parts(form f, const poly_t& q, const std::vector<dou
     return parts;
 }
 
-/// The first-order bound on |computed - exact| for the closed form of magnitude `value`.
-inline double rounding_bound(form f, const poly_t& q, const std::vector<double>& d, double u, double value) {
-    const bound_parts b = rounding_parts(f, q, d, 2);
+/// The first-order bound on |computed - exact| for the closed form of magnitude `value`
+/// (factor_error: see rounding_parts).
+inline double rounding_bound(form f, const poly_t& q, const std::vector<double>& d, double u, double value,
+                             double factor_error = 0) {
+    const bound_parts b = rounding_parts(f, q, d, 2, factor_error);
     if (b.region == 0 && b.terms == 0) return 0;
     return u * (b.region + b.terms + b.summation) / b.norm + 3 * u * std::abs(value);
 }

@@ -12,9 +12,11 @@
 
 namespace ltc {
 
-/// EdgePolicy selects how integrate() evaluates the edge terms (ltc/core/edge_policy.hpp).
-template <typename T, typename EdgePolicy = edge_policy::exact>
+/// Policy selects how integrate() evaluates the edge terms (ltc/core/edge_policy.hpp); the
+/// default, edge_policy::automatic, is minimax_rational in float and exact in double.
+template <typename T, typename Policy = edge_policy::automatic>
 struct clamped_cosine {
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     using scalar = T;
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;

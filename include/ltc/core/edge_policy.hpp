@@ -81,7 +81,9 @@ struct has_positive_branch<Policy, T, std::void_t<decltype(Policy::template posi
 /// How the factor theta / sin(theta) of the edge term is evaluated, from c = cos(theta) and
 /// the cross product a x b of the edge's unit vertices (|a x b| = sin(theta), accurate: it comes
 /// from a cancellation-free cross product; a policy takes its length only where it needs it).
-/// Selected at compile time; every integral of the library defaults to `exact`. A policy may also
+/// Selected at compile time; the plain integrals and the shading functions default to
+/// `automatic` (minimax_rational in float, exact in double), the lower-level polygon functions
+/// (edge_integral, form_factor, vector_form_factor) to `exact`. A policy may also
 /// expose positive_branch(y), its fit of theta / sin(theta) at c = 1 - y >= 0: edge_integral_z
 /// then skips the x and y components of a x b there. Measured maximum relative errors of the
 /// factor over c in [-1, 1] are in the README and tests/test_edge_policies.cpp.
@@ -157,6 +159,24 @@ struct fp16_quadratic {
         return T(3.1415927f) / T(std::sqrt(static_cast<float>(one_minus_c2 > T(1e-4f) ? one_minus_c2 : T(1e-4f)))) - v;
     }
 };
+
+/// The default of the plain integrals and of the shading functions (clamped_cosine,
+/// integrate_polygon_light, shade_polygon_light): not a policy itself, but resolved per scalar
+/// type by resolve_t: minimax_rational in float (the fastest float-accurate fit: within a few
+/// ulps of theta / sin(theta), tests/test_edge_policies.cpp), exact in double and any other type.
+struct automatic {};
+
+/// Policy itself, or what `automatic` stands for in T.
+template <typename Policy, typename T>
+struct resolve {
+    using type = Policy;
+};
+template <typename T>
+struct resolve<automatic, T> {
+    using type = std::conditional_t<std::is_same_v<T, float>, minimax_rational, exact>;
+};
+template <typename Policy, typename T>
+using resolve_t = typename resolve<Policy, T>::type;
 
 }  // namespace edge_policy
 

@@ -78,51 +78,52 @@ namespace detail {
 template <typename Policy, std::size_t N, typename T>
 void integrate(const matrices<T>& mats, std::size_t n, const T* const* x, const T* const* y, const T* const* z, T* out,
                std::size_t count, sidedness s, isa which) {
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     if (n < 3) {
         for (std::size_t i = 0; i < count; ++i) out[i] = T(0);
         return;
     }
     std::size_t vectorized = 0;
-    if constexpr (simd_policy<Policy, T>) {
+    if constexpr (simd_policy<EdgePolicy, T>) {
 #if LTC_SIMD
         const bool two_sided = s == sidedness::two_sided;
         switch (resolve(which)) {
-            case isa::baseline: vectorized = run_baseline<Policy, N>(mats, n, x, y, z, out, count, two_sided); break;
+            case isa::baseline: vectorized = run_baseline<EdgePolicy, N>(mats, n, x, y, z, out, count, two_sided); break;
 #if LTC_SIMD_AVX2
-            case isa::avx2: vectorized = run_avx2<Policy, N>(mats, n, x, y, z, out, count, two_sided); break;
+            case isa::avx2: vectorized = run_avx2<EdgePolicy, N>(mats, n, x, y, z, out, count, two_sided); break;
 #endif
             default: break;
         }
 #endif
     }
     (void)which;
-    scalar_items<Policy>(mats, x, y, z, n, out, vectorized, count, s);
+    scalar_items<EdgePolicy>(mats, x, y, z, n, out, vectorized, count, s);
 }
 
 }  // namespace detail
 
 /// out[i] = the horizon-clipped clamped-cosine integral of M_i^-1 P_i for count polygons of N
 /// vertices (N >= 3; N < 3 gives 0 like the scalar path), seen by a one- or two-sided emitter.
-template <typename Policy = edge_policy::minimax_rational, typename T, std::size_t N>
+template <typename Policy = edge_policy::automatic, typename T, std::size_t N>
 void integrate_polygons(const polygon_soa<T, N>& in, T* out, std::size_t count, sidedness s, isa which = isa::automatic) {
     detail::integrate<Policy, N>(in.m_inv, N, in.x, in.y, in.z, out, count, s, which);
 }
 
 /// integrate_polygons for quads.
-template <typename Policy = edge_policy::minimax_rational, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 void integrate_quads(const quad_soa<T>& in, T* out, std::size_t count, sidedness s, isa which = isa::automatic) {
     integrate_polygons<Policy>(in, out, count, s, which);
 }
 
 /// The same with the vertex count known at run time only (the same for every item).
-template <typename Policy = edge_policy::minimax_rational, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 void integrate_ngons(const ngon_soa<T>& in, T* out, std::size_t count, sidedness s, isa which = isa::automatic) {
     detail::integrate<Policy, 0>(in.m_inv, in.n, in.x, in.y, in.z, out, count, s, which);
 }
 
 /// integrate_ngons (the one kernel serves every n; kept from 0.1, where n > 8 had a kernel of
 /// its own).
-template <typename Policy = edge_policy::minimax_rational, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 void integrate_ngons_blocked(const ngon_soa<T>& in, T* out, std::size_t count, sidedness s, isa which = isa::automatic) {
     integrate_ngons<Policy>(in, out, count, s, which);
 }

@@ -55,23 +55,24 @@ inline void write(const shading_results<T>& out, std::size_t i, const polygon_li
 
 /// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
 /// and the given radiance, like ltc::shade_polygon_light item by item.
-template <typename Policy = edge_policy::minimax_rational, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& radiance,
                          const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
                          std::size_t count, isa which = isa::automatic) {
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     std::vector<T> lx(n), ly(n), lz(n);
     for (std::size_t k = 0; k < n; ++k) lx[k] = vertices[k].x, ly[k] = vertices[k].y, lz[k] = vertices[k].z;
     const detail::shading_light<T> light{lx.data(), ly.data(), lz.data(), n, {radiance.x, radiance.y, radiance.z},
                                          side == sidedness::two_sided};
     std::size_t vectorized = 0;
-    if constexpr (detail::simd_policy<Policy, T>) {
+    if constexpr (detail::simd_policy<EdgePolicy, T>) {
 #if LTC_SIMD
         if (n >= 3) switch (resolve(which)) {
                 case isa::baseline:
-                    vectorized = detail::run_shade_baseline<Policy>(ggx::table, light, points, out, count);
+                    vectorized = detail::run_shade_baseline<EdgePolicy>(ggx::table, light, points, out, count);
                     break;
 #if LTC_SIMD_AVX2
-                case isa::avx2: vectorized = detail::run_shade_avx2<Policy>(ggx::table, light, points, out, count); break;
+                case isa::avx2: vectorized = detail::run_shade_avx2<EdgePolicy>(ggx::table, light, points, out, count); break;
 #endif
                 default: break;
             }
@@ -100,7 +101,7 @@ struct quad_lights {
 
 /// Shades one point (as ltc::shade_polygon_light takes it) with each of count quad lights: out
 /// receives light i's specular and diffuse at item i (sum them for the point's radiance).
-template <typename Policy = edge_policy::minimax_rational, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
                        const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,
                        sidedness side, const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {

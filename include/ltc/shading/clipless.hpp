@@ -115,7 +115,8 @@ inline T integrate_signed(const transformed<clamped_cosine<T, Policy>>& d, const
                           std::size_t n, method how = method::analytic) {
     const auto at = [&](std::size_t i) { return glm::vec<3, T>(vertices[i]); };
     const sphere_table* table = how == method::table ? &sphere_table::instance() : nullptr;
-    return detail::integrate_signed<T, Policy>(d.inverse_matrix(), d.inverse_determinant(), at, n, how, table);
+    return detail::integrate_signed<T, typename clamped_cosine<T, Policy>::EdgePolicy>(d.inverse_matrix(),
+                                                                                   d.inverse_determinant(), at, n, how, table);
 }
 
 /// Clipless approximation of d.integrate(vertices, n, side).

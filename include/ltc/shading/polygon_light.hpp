@@ -68,7 +68,7 @@ struct polygon_light_result {
 
 /// Shading with explicit LTC coefficients (m_inv in the local frame of `frame`, magnitude,
 /// fresnel; e.g. from ltc::ltc_table::fetch(frame.cos_theta_v, roughness)).
-template <typename Policy = edge_policy::exact, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
     const shading_frame<T>& frame, const ltc_coefficients<T>& lobe, const glm::vec<3, T>& P,
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
@@ -84,7 +84,7 @@ LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
 
 /// Shading with the library's GGX table: cos theta_v from N and V, the coefficients from
 /// ltc::ggx::fetch(cos theta_v, roughness) (alpha = roughness^2).
-template <typename Policy = edge_policy::exact, typename T>
+template <typename Policy = edge_policy::automatic, typename T>
 inline polygon_light_result<T> shade_polygon_light(const glm::vec<3, T>& P, const glm::vec<3, T>& N,
                                                    const glm::vec<3, T>& V, T roughness, const glm::vec<3, T>& F0,
                                                    const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,

@@ -133,12 +133,13 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrals_shading_first(const 
 /// The signed integrals (form factor E and LTC integral I_ltc) of the world-space polygon
 /// vertices[0..n) seen from P in `frame`, for the LTC whose inverse matrix in the local frame
 /// is m_inv (any scale, any sign of determinant). Policy evaluates the edge terms (edge_policy;
-/// exact by default, minimax_rational for speed at float accuracy).
-template <typename Policy = edge_policy::exact, typename T>
+/// by default `automatic`: minimax_rational in float, exact in double).
+template <typename Policy = edge_policy::automatic, typename T>
 LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
     const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T>& P,
     const glm::vec<3, T>* vertices, std::size_t n, horizon_clipping clip = horizon_clipping::ltc_space) {
     using vec3 = glm::vec<3, T>;
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     polygon_light_integrals<T> r;
     if (!frame.valid || n < 3) return r;
     // Local coordinates of vertex i: as given (the clipless orientation test needs the planar
@@ -147,7 +148,7 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
     const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertices[i]) - P)); };
     switch (clip) {
         case horizon_clipping::shading_first:
-            return detail::integrals_shading_first<T, Policy>(m_inv, local_at, n, true);
+            return detail::integrals_shading_first<T, EdgePolicy>(m_inv, local_at, n, true);
         case horizon_clipping::sphere_analytic:
         case horizon_clipping::sphere_table: {
             const clipless::method how =
@@ -158,8 +159,8 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
             const clipless::sphere_table* table =
                 how == clipless::method::table ? &clipless::sphere_table::instance() : nullptr;
 #endif
-            r.form_factor = clipless::detail::integrate_signed<T, Policy>(glm::mat<3, 3, T>(T(1)), T(1), local_raw, n, how, table);
-            r.ltc = clipless::detail::integrate_signed<T, Policy>(m_inv, glm::determinant(m_inv), local_raw, n, how, table);
+            r.form_factor = clipless::detail::integrate_signed<T, EdgePolicy>(glm::mat<3, 3, T>(T(1)), T(1), local_raw, n, how, table);
+            r.ltc = clipless::detail::integrate_signed<T, EdgePolicy>(m_inv, glm::determinant(m_inv), local_raw, n, how, table);
             return r;
         }
         case horizon_clipping::ltc_space:
@@ -168,8 +169,8 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
             // normalized once: before the general path, after the quad path's clip.
             const auto local_dirs = detail::make_directions(local_at);
             const auto ltc_dirs = detail::make_directions([&](std::size_t i) { return m_inv * local_at(i); });
-            r.form_factor = clamped_cosine<T, Policy>::signed_integral(local_dirs, n);
-            const T s = clamped_cosine<T, Policy>::signed_integral(ltc_dirs, n);
+            r.form_factor = clamped_cosine<T, EdgePolicy>::signed_integral(local_dirs, n);
+            const T s = clamped_cosine<T, EdgePolicy>::signed_integral(ltc_dirs, n);
             r.ltc = glm::determinant(m_inv) < T(0) ? -s : s;
             return r;
         }
