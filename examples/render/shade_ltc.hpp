@@ -1,5 +1,6 @@
 // render/shade_ltc.hpp -- the LTC render of one pixel (float, a renderer's path): the polygonal
-// lights with ltc::shade_polygon_light, the textured light with ltc::shade_textured_quad_light
+// lights with ltc::shade_polygon_light (or a row of pixels at once with
+// ltc::batch::shade_polygon_light), the textured light with ltc::shade_textured_quad_light
 // (I_D I_L: the exact polygon integral times one fetch into the prefiltered texture, paper
 // sections 5.2-5.4); specular and diffuse, Schlick's Fresnel through the table (Hill 2016).
 #pragma once
@@ -9,10 +10,12 @@
 #include "math.hpp"
 #include "scene.hpp"
 
+#include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/textured_light.hpp>
 
 #include <cstddef>
+#include <vector>
 
 namespace render {
 
@@ -30,6 +33,46 @@ inline vec3 shade_ltc(const scene& s, const pixel_hit& hit) {
         sum += r.specular + r.diffuse;
     }
     return sum;
+}
+
+/// shade_ltc over count pixels at once, the way a renderer's pass over its G-buffer would: the
+/// floor pixels gathered into structures of arrays, then each light over all of them with
+/// ltc::batch::shade_polygon_light (one pixel per SIMD lane, the same values up to rounding).
+inline void shade_ltc_batch(const scene& s, const pixel_hit* hits, std::size_t count, vec3* out) {
+    std::vector<float> in[16];  // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb
+    std::vector<std::size_t> where;
+    for (std::size_t i = 0; i < count; ++i) {
+        const pixel_hit& h = hits[i];
+        if (h.kind != pixel_hit::floor) {
+            out[i] = shade_ltc(s, h);
+            continue;
+        }
+        const material& m = s.materials[static_cast<std::size_t>(h.material)];
+        const float v[16] = {h.p.x, h.p.y, h.p.z, 0, 0, 1, h.v.x, h.v.y, h.v.z, m.roughness,
+                             m.f0.x, m.f0.y, m.f0.z, m.albedo.x, m.albedo.y, m.albedo.z};
+        for (int k = 0; k < 16; ++k) in[k].push_back(v[k]);
+        where.push_back(i);
+    }
+    const std::size_t n = where.size();
+    ltc::batch::shading_points<float> points;
+    const float** field[10] = {&points.px, &points.py, &points.pz, &points.nx, &points.ny,
+                               &points.nz, &points.vx, &points.vy, &points.vz, &points.roughness};
+    for (int k = 0; k < 10; ++k) *field[k] = in[k].data();
+    for (int c = 0; c < 3; ++c) points.f0[c] = in[10 + c].data(), points.albedo[c] = in[13 + c].data();
+    std::vector<float> result[6];
+    ltc::batch::shading_results<float> res;
+    for (int c = 0; c < 3; ++c) {
+        result[c].resize(n), result[3 + c].resize(n);
+        res.specular[c] = result[c].data(), res.diffuse[c] = result[3 + c].data();
+    }
+    std::vector<vec3> sum(n, vec3(0.0f));
+    for (const light& l : s.lights) {
+        ltc::batch::shade_polygon_light(points, l.radiance, l.vertices.data(), l.vertices.size(),
+                                        ltc::sidedness::one_sided, res, n);
+        for (std::size_t j = 0; j < n; ++j)
+            for (int c = 0; c < 3; ++c) sum[j][c] += result[c][j] + result[3 + c][j];
+    }
+    for (std::size_t j = 0; j < n; ++j) out[where[j]] = sum[j];
 }
 
 /// Radiance of one pixel from the textured light (and its emitter): LTC, I_D I_L (float).

@@ -32,6 +32,7 @@
 #include <ltc/shading/light_texture.hpp>
 #include <ltc/shading/textured_light.hpp>
 #include <ltc/shading/batch.hpp>
+#include <ltc/shading/batch_shading.hpp>
 
 #include <ltc/fitting/brdf/model.hpp>
 #include <ltc/fitting/brdf/ggx.hpp>
