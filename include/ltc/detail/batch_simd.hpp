@@ -1,12 +1,13 @@
-// ltc/detail/batch_simd.hpp -- the batch kernels (ltc/detail/batch_simd_lanes.inc and the
-// kernels built on it) compiled once per instruction set of ltc/detail/simd.hpp, and their entry
-// points: run_baseline, and run_avx2 (compiled for AVX2 + FMA whatever the translation unit's
-// flags; call it only where ltc::simd::avx2::supported()).
+// ltc/detail/batch_simd.hpp -- the batch kernels (built on ltc/detail/lanes.hpp) compiled once
+// per instruction set of ltc/detail/simd.hpp, and their entry points: run_baseline, and run_avx2
+// (compiled for AVX2 + FMA whatever the translation unit's flags; call it only where
+// ltc::simd::avx2::supported()).
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/detail/math.hpp>
+#include <ltc/detail/lanes.hpp>
 #include <ltc/detail/simd.hpp>
 #include <ltc/shading/batch_soa.hpp>
 #include <ltc/shading/table.hpp>
@@ -42,8 +43,8 @@ struct shading_light {
 
 namespace baseline {
 using namespace ltc::simd::baseline;
+using namespace ltc::detail::lanes::baseline;
 #define LTC_SIMD_FN LTC_SIMD_BASELINE_FN
-#include <ltc/detail/batch_simd_lanes.inc>
 #include <ltc/detail/batch_simd_kernel.inc>
 #include <ltc/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN
@@ -59,8 +60,8 @@ std::size_t run_baseline(const matrices<T>& mats, std::size_t n, const T* const*
 #if LTC_SIMD_AVX2
 namespace avx2 {
 using namespace ltc::simd::avx2;
+using namespace ltc::detail::lanes::avx2;
 #define LTC_SIMD_FN LTC_SIMD_AVX2_FN
-#include <ltc/detail/batch_simd_lanes.inc>
 #include <ltc/detail/batch_simd_kernel.inc>
 #include <ltc/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN

@@ -1,0 +1,41 @@
+// ltc/detail/lanes.hpp -- one polygon (or one edge) per SIMD lane: ltc/detail/lanes.inc (the lane
+// primitives, the edge terms of eq. (11), lane_polygon) compiled once per instruction set of
+// ltc/detail/simd.hpp, in ltc::detail::lanes::baseline and, on x86-64, ltc::detail::lanes::avx2.
+// Used by the batch kernels (ltc/detail/batch_simd.hpp) and the float quad path
+// (ltc/detail/quad_lanes.hpp).
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/core/edge_policy.hpp>
+#include <ltc/detail/math.hpp>
+#include <ltc/detail/simd.hpp>
+
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#if LTC_SIMD
+namespace ltc {
+namespace detail {
+namespace lanes {
+
+namespace baseline {
+using namespace ltc::simd::baseline;
+#define LTC_SIMD_FN LTC_SIMD_BASELINE_FN
+#include <ltc/detail/lanes.inc>
+#undef LTC_SIMD_FN
+}  // namespace baseline
+
+#if LTC_SIMD_AVX2
+namespace avx2 {
+using namespace ltc::simd::avx2;
+#define LTC_SIMD_FN LTC_SIMD_AVX2_FN
+#include <ltc/detail/lanes.inc>
+#undef LTC_SIMD_FN
+}  // namespace avx2
+#endif
+
+}  // namespace lanes
+}  // namespace detail
+}  // namespace ltc
+#endif  // LTC_SIMD
