@@ -2,13 +2,15 @@
 // light shape: clipped before normalization by a switch on the vertices above the horizon (as the
 // paper's shader does), then five edge terms without a branch on the vertex count. form_factor
 // (ltc/core/form_factor.hpp) takes it for n = 4 and falls back to the general path where it
-// declines.
+// declines. In float with the symmetric fits (the float default) it runs on SIMD lanes instead,
+// one edge per lane (ltc/detail/quad_lanes.hpp).
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/core/edge_integral.hpp>
 #include <ltc/core/horizon_clip.hpp>
 #include <ltc/detail/math.hpp>
+#include <ltc/detail/quad_lanes.hpp>
 #include <ltc/detail/vertices.hpp>
 
 #include <glm/glm.hpp>
@@ -51,6 +53,12 @@ LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
         q[i] = raw_vertex<T>(v, i);
         above |= (q[i].z >= T(0) ? 1u : 0u) << i;
     }
+#if LTC_SIMD
+    if constexpr (quad_on_lanes<T, Policy>) {
+        const glm::vec3 edges[4] = {q[0], q[1], q[2], q[3]};
+        return quad_form_factor_lanes<Policy>(edges, sum);
+    }
+#endif
     if (above == 5u || above == 10u) return false;
     sum = T(0);
     // All below: 0, unless a vertex is not finite (M^-1 p may overflow to NaN, which counts as

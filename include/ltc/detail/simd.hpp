@@ -1,5 +1,5 @@
 // ltc/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
-// vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, all), and the
+// vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, bits), and the
 // run-time choice between instruction sets.
 //
 // The layer is the compiler's own vector extension (GCC and Clang: `vector_size`), the one that
@@ -116,17 +116,23 @@ LTC_SIMD_BASELINE_FN V sqrt(V x) {
 #endif
 }
 
+/// Bit k set where lane k of the comparison result m is true.
+template <typename VI>
+LTC_SIMD_BASELINE_FN unsigned bits(VI m) {
+#if defined(__SSE2__)
+    if constexpr (sizeof(m[0]) == 4) return unsigned(_mm_movemask_ps((__m128)m));
+    else return unsigned(_mm_movemask_pd((__m128d)m));
+#else
+    unsigned b = 0;
+    for (std::size_t k = 0; k < sizeof(VI) / sizeof(m[0]); ++k) b |= (m[k] ? 1u : 0u) << k;
+    return b;
+#endif
+}
+
 /// Whether every lane of the comparison result m is true.
 template <typename VI>
 LTC_SIMD_BASELINE_FN bool all(VI m) {
-#if defined(__SSE2__)
-    if constexpr (sizeof(m[0]) == 4) return _mm_movemask_ps((__m128)m) == 0xf;
-    else return _mm_movemask_pd((__m128d)m) == 0x3;
-#else
-    for (std::size_t k = 0; k < sizeof(VI) / sizeof(m[0]); ++k)
-        if (!m[k]) return false;
-    return true;
-#endif
+    return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
 }  // namespace baseline
@@ -160,9 +166,14 @@ LTC_SIMD_AVX2_FN V sqrt(V x) {
 }
 
 template <typename VI>
+LTC_SIMD_AVX2_FN unsigned bits(VI m) {
+    if constexpr (sizeof(m[0]) == 4) return unsigned(_mm256_movemask_ps((__m256)m));
+    else return unsigned(_mm256_movemask_pd((__m256d)m));
+}
+
+template <typename VI>
 LTC_SIMD_AVX2_FN bool all(VI m) {
-    if constexpr (sizeof(m[0]) == 4) return _mm256_movemask_ps((__m256)m) == 0xff;
-    else return _mm256_movemask_pd((__m256d)m) == 0xf;
+    return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
 /// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once.
