@@ -55,8 +55,8 @@ LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
     }
 #if LTC_SIMD
     if constexpr (quad_on_lanes<T, Policy>) {
-        const glm::vec3 edges[4] = {q[0], q[1], q[2], q[3]};
-        return quad_form_factor_lanes<Policy>(edges, sum);
+        const glm::vec3 corners[4] = {q[0], q[1], q[2], q[3]};
+        return quad_form_factor_lanes<Policy>(v, corners, sum);
     }
 #endif
     if (above == 5u || above == 10u) return false;

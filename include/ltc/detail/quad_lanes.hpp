@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include <type_traits>
+#include <utility>
 
 namespace ltc {
 namespace detail {
@@ -24,27 +25,32 @@ template <typename T, typename Policy>
 inline constexpr bool quad_on_lanes = LTC_SIMD && std::is_same_v<T, float> &&
                                       std::is_base_of_v<symmetric_fit<Policy>, Policy>;
 
+/// Whether vertices v are M^-1 p_i given as v.m_inv and v.v (transformed<>'s vertices): the lanes
+/// then apply M^-1 themselves, four vertices at once.
+template <typename Vertices, typename = void>
+struct matrix_and_points : std::false_type {};
+template <typename Vertices>
+struct matrix_and_points<Vertices, std::void_t<decltype(std::declval<const Vertices&>().m_inv),
+                                               decltype(std::declval<const Vertices&>().v)>> : std::true_type {};
+
 #if LTC_SIMD
-/// quad_form_factor's sum for the float quad q (M^-1 p of its vertices), or false where the
-/// general path must take over: two runs above the horizon, and the lanes' own hand-backs (a
-/// vertex or a crossing outside their range, an edge through the shading point: lanes.inc).
-template <typename Policy>
-LTC_INLINE bool quad_form_factor_lanes(const glm::vec3 (&q)[4], float& sum) {
+/// quad_form_factor's sum for the float quad whose vertices (M^-1 p, any scale) are in the lanes
+/// of bx, by, bz, or false where the general path must take over: two runs above the horizon, and
+/// the lanes' own hand-backs (a vertex or a crossing outside their range, an edge through the
+/// shading point: lanes.inc).
+template <typename Policy, typename VF>
+LTC_INLINE bool quad_form_factor_lanes(VF bx, VF by, VF bz, float& sum) {
     using namespace lanes::baseline;
-    using VF = types<float>::vf;
     using VI = types<float>::vi;
     // Edge k runs from vertex k - 1 (a) to vertex k (b).
-    const VF bx = {q[0].x, q[1].x, q[2].x, q[3].x}, by = {q[0].y, q[1].y, q[2].y, q[3].y};
-    const VF bz = {q[0].z, q[1].z, q[2].z, q[3].z};
     const VF ax = __builtin_shufflevector(bx, bx, 3, 0, 1, 2), ay = __builtin_shufflevector(by, by, 3, 0, 1, 2);
     const VF az = __builtin_shufflevector(bz, bz, 3, 0, 1, 2);
     const VF lb = bx * bx + by * by + bz * bz, la = __builtin_shufflevector(lb, lb, 3, 0, 1, 2);
     const VI b_above = bz >= 0.0f, a_above = __builtin_shufflevector(b_above, b_above, 3, 0, 1, 2);
-    const unsigned above = bits(b_above);
     sum = 0.0f;
-    // All below: 0, unless a vertex is not finite (the general path decides then, as in
-    // quad_path.hpp).
-    if (above == 0u) return is_finite(q[0]) && is_finite(q[1]) && is_finite(q[2]) && is_finite(q[3]);
+    // All below: 0, unless a vertex is not finite (lb - lb is then NaN, not 0): the general path
+    // decides then, as in quad_path.hpp.
+    if (bits(b_above) == 0u) return bits(lb - lb == 0.0f) == 0xfu;
     VI fallback = ~((lb > 1e-16f) & (lb < 1e16f));
     VF xx, xy;
     const VF t = clipped_edge<Policy, float>(ax, ay, az, la, a_above, bx, by, bz, lb, b_above, xx, xy, fallback);
@@ -60,6 +66,26 @@ LTC_INLINE bool quad_form_factor_lanes(const glm::vec3 (&q)[4], float& sum) {
     }
     sum = ((t[0] + t[1]) + (t[2] + t[3])) + horizon;
     return true;
+}
+
+/// The same from the quad's vertices: M^-1 p_i applied four at once (glm's order of operations)
+/// where v gives M^-1 and the p_i, else the vertices as quad_form_factor reads them (q).
+template <typename Policy, typename Vertices>
+LTC_INLINE bool quad_form_factor_lanes(const Vertices& v, const glm::vec3 (&q)[4], float& sum) {
+    using VF = lanes::baseline::types<float>::vf;
+    if constexpr (matrix_and_points<Vertices>::value) {
+        const glm::mat3& m = v.m_inv;
+        const glm::vec3* p = v.v;
+        const VF px = {p[0].x, p[1].x, p[2].x, p[3].x}, py = {p[0].y, p[1].y, p[2].y, p[3].y};
+        const VF pz = {p[0].z, p[1].z, p[2].z, p[3].z};
+        return quad_form_factor_lanes<Policy>(m[0][0] * px + m[1][0] * py + m[2][0] * pz,
+                                              m[0][1] * px + m[1][1] * py + m[2][1] * pz,
+                                              m[0][2] * px + m[1][2] * py + m[2][2] * pz, sum);
+    } else {
+        const VF bx = {q[0].x, q[1].x, q[2].x, q[3].x}, by = {q[0].y, q[1].y, q[2].y, q[3].y};
+        const VF bz = {q[0].z, q[1].z, q[2].z, q[3].z};
+        return quad_form_factor_lanes<Policy>(bx, by, bz, sum);
+    }
 }
 #endif
 
