@@ -34,26 +34,29 @@ struct matrix_and_points<Vertices, std::void_t<decltype(std::declval<const Verti
                                                decltype(std::declval<const Vertices&>().v)>> : std::true_type {};
 
 #if LTC_SIMD
-/// quad_form_factor's sum for the float quad whose vertices (M^-1 p, any scale) are in the lanes
-/// of bx, by, bz, or false where the general path must take over: two runs above the horizon, and
+/// quad_form_factor's sum for the float quad whose vertices (M^-1 p, any scale: normalized here)
+/// are in the lanes of bx, by, bz, or false where the general path must take over: two runs above the horizon, and
 /// the lanes' own hand-backs (a vertex or a crossing outside their range, an edge through the
 /// shading point: lanes.inc).
 template <typename Policy, typename VF>
 LTC_INLINE bool quad_form_factor_lanes(VF bx, VF by, VF bz, float& sum) {
     using namespace lanes::baseline;
     using VI = types<float>::vi;
+    const VI b_above = bz >= 0.0f, a_above = __builtin_shufflevector(b_above, b_above, 3, 0, 1, 2);
+    sum = 0.0f;
+    // All below: 0, unless a vertex is not finite (|v|^2 - |v|^2 is then NaN, not 0): the general
+    // path decides then, as in quad_path.hpp.
+    if (bits(b_above) == 0u) {
+        const VF l2 = bx * bx + by * by + bz * bz;
+        return bits(l2 - l2 == 0.0f) == 0xfu;
+    }
+    VI fallback{};
+    normalize_vertex(bx, by, bz, fallback);
     // Edge k runs from vertex k - 1 (a) to vertex k (b).
     const VF ax = __builtin_shufflevector(bx, bx, 3, 0, 1, 2), ay = __builtin_shufflevector(by, by, 3, 0, 1, 2);
     const VF az = __builtin_shufflevector(bz, bz, 3, 0, 1, 2);
-    const VF lb = bx * bx + by * by + bz * bz, la = __builtin_shufflevector(lb, lb, 3, 0, 1, 2);
-    const VI b_above = bz >= 0.0f, a_above = __builtin_shufflevector(b_above, b_above, 3, 0, 1, 2);
-    sum = 0.0f;
-    // All below: 0, unless a vertex is not finite (lb - lb is then NaN, not 0): the general path
-    // decides then, as in quad_path.hpp.
-    if (bits(b_above) == 0u) return bits(lb - lb == 0.0f) == 0xfu;
-    VI fallback = ~((lb > 1e-16f) & (lb < 1e16f));
     VF xx, xy;
-    const VF t = clipped_edge<Policy, float>(ax, ay, az, la, a_above, bx, by, bz, lb, b_above, xx, xy, fallback);
+    const VF t = clipped_edge<Policy, float>(ax, ay, az, a_above, bx, by, bz, b_above, xx, xy, fallback);
     const unsigned exits = bits(a_above & ~b_above), entries = bits(b_above & ~a_above);
     if (bits(fallback) != 0u || (exits & (exits - 1u)) != 0u) return false;  // a hand-back, or two exits
     float horizon = 0.0f;
