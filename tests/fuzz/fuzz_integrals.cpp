@@ -1,42 +1,31 @@
 // libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
 // and any matrix accepted by the checked factory, every integral, density and sample of the
-// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness. Build: clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined
-// -I include tests/fuzz/fuzz_integrals.cpp; run on tests/fuzz/corpus (see .ci/run).
-#include <ltc/shading/clipless.hpp>
+// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness; and
+// the batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
+// CPU runs) agrees with the scalar path. Build: clang++ -std=c++17 -g -O1
+// -fsanitize=fuzzer,address,undefined -I include tests/fuzz/fuzz_integrals.cpp; run on
+// tests/fuzz/corpus (see .ci/run).
+#include "fuzz_batch.hpp"
+#include "fuzz_common.hpp"
+
 #include <ltc/ltc.hpp>
+#include <ltc/shading/clipless.hpp>
 #include <ltc/shading/polygon_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 namespace {
 
-template <typename T>
-void require_finite(T x, const char* what) {
-    if (!std::isfinite(x)) {
-        std::fprintf(stderr, "non-finite %s: %g\n", what, static_cast<double>(x));
-        std::abort();
-    }
-}
-
-template <typename T>
-void require_finite(const glm::vec<3, T>& v, const char* what) {
-    require_finite(v.x, what);  // component by component: a sum of huge finite values overflows
-    require_finite(v.y, what);
-    require_finite(v.z, what);
-}
-
-template <typename T>
-T finite_value(FuzzedDataProvider& in) {
-    // Mix ordinary values with extreme magnitudes (huge, tiny, subnormal) and exact zeros.
-    T x = in.ConsumeFloatingPoint<T>();
-    return std::isfinite(x) ? x : T(0);
-}
+using namespace ltc_fuzz;  // fuzz_common.hpp, fuzz_batch.hpp
 
 template <typename T, typename Dist>
 void check_distribution(const glm::vec<3, T>* v, std::size_t n, const glm::mat<3, 3, T>& m, bool use_inverse,
@@ -101,6 +90,8 @@ void run(FuzzedDataProvider& in) {
     check_distribution<T, ltc::uniform_hemisphere<T>>(pv, n, m, use_inverse, u);
     check_distribution<T, ltc::clamped_cosine<T>>(pv, n, m, use_inverse, u);
     check_distribution<T, ltc::squared_clamped_cosine<T>>(pv, n, m, use_inverse, u);
+
+    check_batch<T>(in, m, v);
 }
 
 }  // namespace
