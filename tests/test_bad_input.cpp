@@ -189,6 +189,24 @@ TEMPLATE_TEST_CASE("huge and tiny vertices give the same integrals as unit ones"
     }
 }
 
+TEMPLATE_TEST_CASE("from_inverse with entries near the largest finite value integrates as with unit ones",
+                   "[bad-input][matrix]", float, double) {
+    // M^-1 times a power of two is the same distribution, and the scaling is exact: the integral of
+    // the huge M^-1 (whose products M^-1 p and determinant overflow) equals that of the unit one
+    // (found by the fuzzer: NaN two-sided, 0 one-sided, before the rescaled slow path).
+    using T = TestType;
+    const glm::mat<3, 3, T> unit(glm::vec<3, T>(1, 1, 0), glm::vec<3, T>(1, -1, 0), glm::vec<3, T>(0, 0, 1));
+    const T big = std::ldexp(T(1), std::numeric_limits<T>::max_exponent - 1);  // the largest power of two
+    const vec3<T> quad[4] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+    for (const auto s : {ltc::sidedness::two_sided, ltc::sidedness::one_sided}) {
+        const T ref = ltc::transformed<ltc::clamped_cosine<T>>::from_inverse(unit).integrate(quad, 4, s);
+        const T got = ltc::transformed<ltc::clamped_cosine<T>>::from_inverse(unit * big).integrate(quad, 4, s);
+        CAPTURE(s == ltc::sidedness::two_sided, ref, got);
+        CHECK(ref > T(0.5));
+        CHECK(got == ref);
+    }
+}
+
 TEMPLATE_TEST_CASE("edge integral is accurate for nearly parallel and nearly opposite vertices", "[bad-input][edge]",
                    float, double) {
     using T = TestType;

@@ -68,8 +68,19 @@ LTC_HOST_DEVICE inline inverse_result<T> fast_inverse(const glm::mat<3, 3, T>& m
     return {glm::transpose(glm::mat<3, 3, T>(r0, r1, r2)) * (T(1) / det), det};
 }
 
+/// The determinant of a finite M^-1 whose determinant overflows (entries near the largest finite
+/// value): infinite, with the sign of the determinant of M^-1 rescaled by a power of two (exact),
+/// which is what the integrals use of it. Out of line: the rare slow path of from_inverse.
+template <typename T>
+LTC_HOST_DEVICE LTC_NOINLINE T overflowed_determinant(const glm::mat<3, 3, T>& m_inv) {
+    const glm::mat<3, 3, T> s = rescale_pow2(m_inv);
+    const T det = glm::dot(s[0], glm::cross(s[1], s[2]));
+    return det < T(0) ? -T(INFINITY) : T(INFINITY);  // INFINITY: usable in CUDA device code
+}
+
 /// The unit directions of M^-1 p_i, computed on the fly. Where M^-1 p overflows (huge finite
-/// vertices) p is first rescaled by a power of two (exactly): the integrals only see directions.
+/// vertices, or entries of M^-1 near the largest finite value) p and M^-1 are first rescaled by
+/// powers of two (exactly): the integrals only see directions.
 template <typename T>
 struct transformed_vertices {
     glm::mat<3, 3, T> m_inv;  // a copy: a reference would keep the owning transformed<> in memory
@@ -84,7 +95,9 @@ struct transformed_vertices {
     /// M^-1 p_i before normalization (for the quad path, ltc/core/quad_path.hpp).
     LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> raw(std::size_t i) const { return m_inv * v[i]; }
     static LTC_HOST_DEVICE LTC_NOINLINE glm::vec<3, T> rescaled(const glm::mat<3, 3, T>& m, const glm::vec<3, T>& p) {
-        return safe_normalize(m * rescale_pow2(p));
+        // Both by exact powers of two: with entries of M^-1 near the largest finite value,
+        // M^-1 p overflows even for a p of unit scale.
+        return safe_normalize(rescale_pow2(m) * rescale_pow2(p));
     }
 };
 
@@ -114,7 +127,8 @@ class transformed {
     /// D from M^-1 directly, as renderers store it. Same precondition as the constructor.
     /// Costs one determinant: M itself is only formed by sample() and matrix().
     LTC_HOST_DEVICE static transformed from_inverse(const mat3& m_inv) {
-        return transformed(m_inv, glm::dot(m_inv[0], glm::cross(m_inv[1], m_inv[2])));
+        const T det = glm::dot(m_inv[0], glm::cross(m_inv[1], m_inv[2]));
+        return transformed(m_inv, std::isfinite(det) ? det : detail::overflowed_determinant(m_inv));
     }
 
     /// Like the constructor, but throws ltc::invalid_transform when M has a non-finite entry or

@@ -59,6 +59,21 @@ LTC_HOST_DEVICE inline glm::vec<3, T> rescale_pow2(const glm::vec<3, T>& v) {
     return glm::vec<3, T>(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
 }
 
+/// m times the power of two that brings its largest entry into [1, 2): exact, as rescale_pow2 of a
+/// vector (m * v then has the direction of the original product, without its overflow).
+template <typename T>
+LTC_HOST_DEVICE inline glm::mat<3, 3, T> rescale_pow2(const glm::mat<3, 3, T>& m) {
+    T big = T(0);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) big = glm::max(big, std::abs(m[c][r]));
+    if (!(big > T(0)) || !std::isfinite(big)) return m;  // zero, or not finite
+    const int e = std::ilogb(big);
+    glm::mat<3, 3, T> s;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) s[c][r] = std::ldexp(m[c][r], -e);
+    return s;
+}
+
 /// safe_normalize's slow path, kept out of line: an exact power-of-two rescale first, so that the
 /// result is bitwise the one of the rescaled polygon (integrals are invariant under power-of-two
 /// scaling).
