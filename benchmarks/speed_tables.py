@@ -92,7 +92,7 @@ def plot(json_dir, image):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(11, 3.8))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
     for ax, (program, rows, what) in zip(axes, [("bench_batch", BATCH_ROWS, "quad integral, 4096 items"),
                                                ("bench_shading", SHADING_ROWS, "GGX shading of a quad light, 4096 points")]):
         _, ratios, _ = table(json_dir, program, rows)
@@ -103,11 +103,11 @@ def plot(json_dir, image):
             values = ratios.get(title, [])
             ax.bar([i + k * width for i in range(len(values))], values, width, label=title)
         ax.set_xticks([i + 0.4 - width / 2 for i in range(len(builds))])
-        ax.set_xticklabels(builds, fontsize=8)
+        ax.set_xticklabels([b.replace(" -march", "\n-march") for b in builds], fontsize=8)
         ax.axhline(1.0, color="black", linewidth=0.6)
         ax.set_ylabel("throughput / reference port")
         ax.set_title(what, fontsize=10)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)
     fig.tight_layout()
     fig.savefig(image, dpi=110)
 
