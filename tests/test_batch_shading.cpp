@@ -50,11 +50,9 @@ struct points_soa {
     }
     glm::vec3 vec(int c, std::size_t i) const { return glm::vec3(a[c][i], a[c + 1][i], a[c + 2][i]); }
     ltc::batch::shading_points<float> view() const {
-        ltc::batch::shading_points<float> p;
-        p.px = a[0].data(), p.py = a[1].data(), p.pz = a[2].data(), p.nx = a[3].data(), p.ny = a[4].data();
-        p.nz = a[5].data(), p.vx = a[6].data(), p.vy = a[7].data(), p.vz = a[8].data(), p.roughness = a[9].data();
-        for (int c = 0; c < 3; ++c) p.f0[c] = a[10 + c].data(), p.albedo[c] = a[13 + c].data();
-        return p;
+        const float* c[16];
+        for (int k = 0; k < 16; ++k) c[k] = a[k].data();
+        return ltc::batch::shading_points<float>::from_columns(c);
     }
 };
 

@@ -54,11 +54,9 @@ inline void shade_ltc_batch(const scene& s, const pixel_hit* hits, std::size_t c
         where.push_back(i);
     }
     const std::size_t n = where.size();
-    ltc::batch::shading_points<float> points;
-    const float** field[10] = {&points.px, &points.py, &points.pz, &points.nx, &points.ny,
-                               &points.nz, &points.vx, &points.vy, &points.vz, &points.roughness};
-    for (int k = 0; k < 10; ++k) *field[k] = in[k].data();
-    for (int c = 0; c < 3; ++c) points.f0[c] = in[10 + c].data(), points.albedo[c] = in[13 + c].data();
+    const float* columns[16];
+    for (int k = 0; k < 16; ++k) columns[k] = in[k].data();
+    const auto points = ltc::batch::shading_points<float>::from_columns(columns);
     std::vector<float> result[6];
     ltc::batch::shading_results<float> res;
     for (int c = 0; c < 3; ++c) {

@@ -73,6 +73,16 @@ struct shading_points {
     const T* roughness = nullptr;
     const T* f0[3] = {};
     const T* albedo[3] = {};
+
+    /// The view of 16 arrays in the order px, py, pz, nx, ny, nz, vx, vy, vz, roughness, f0 r g b,
+    /// albedo r g b.
+    static shading_points from_columns(const T* const (&c)[16]) {
+        shading_points p;
+        p.px = c[0], p.py = c[1], p.pz = c[2], p.nx = c[3], p.ny = c[4], p.nz = c[5];
+        p.vx = c[6], p.vy = c[7], p.vz = c[8], p.roughness = c[9];
+        for (int k = 0; k < 3; ++k) p.f0[k] = c[10 + k], p.albedo[k] = c[13 + k];
+        return p;
+    }
 };
 
 /// Where the shading batches write: specular[c][i] and diffuse[c][i], channel c of item i.
