@@ -108,7 +108,7 @@ TEST_CASE("batch shading of one light matches shade_polygon_light point by point
     const points_soa pts(count, 12);
     ltc_test::rng g(13);
     const glm::vec3 radiance(3.0f, 2.0f, 1.0f);
-    for (const std::size_t n : {3u, 4u, 5u, 7u})
+    for (const std::size_t n : {3u, 4u, 5u, 7u, 18u})  // 18: the light beyond the stack buffer
         for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
             for (const auto isa : {ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
                 if (!ltc::batch::available(isa)) continue;

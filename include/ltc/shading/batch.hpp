@@ -9,7 +9,9 @@
 // out[i] is the value of
 //   ltc::transformed<ltc::clamped_cosine<T, Policy>>::from_inverse(m_inv_i).integrate(p_i, n, s)
 // up to rounding: the clamped-cosine integral of M^-1 P, clipped to the horizon (eq. 11). The
-// default policy is edge_policy::minimax_rational (float-accurate, the fastest).
+// default policy is edge_policy::automatic, as for the scalar integrals: minimax_rational in
+// float (float-accurate, the fastest), exact in double (which has no SIMD kernel: pass
+// minimax_rational or polynomial for double lanes at float accuracy).
 //
 // How (ltc/detail/batch_simd_kernel.inc): explicit SIMD through the compiler's vector types
 // (ltc/detail/simd.hpp says why not a SIMD library), one kernel compiled for two instruction sets

@@ -13,8 +13,8 @@
 // point per SIMD lane (ltc/detail/batch_simd_shading.inc), with the instruction sets of
 // ltc/shading/batch.hpp (ltc::batch::isa, run-time dispatch); points the kernel hands back and
 // the last count % width go through the scalar function. Policy: as in ltc/shading/batch.hpp
-// (minimax_rational by default; policies without a SIMD kernel shade every point with the scalar
-// function).
+// (edge_policy::automatic by default; policies without a SIMD kernel shade every point with the
+// scalar function).
 //
 // shade_quad_lights: one point, count quad lights (SoA vertices and radiance): the frame and the
 // fetch once, the lights moved into the local frame, then their two integrals through the kernel
@@ -60,9 +60,15 @@ void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& 
                          const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
                          std::size_t count, isa which = isa::automatic) {
     using EdgePolicy = edge_policy::resolve_t<Policy, T>;
-    std::vector<T> lx(n), ly(n), lz(n);
-    for (std::size_t k = 0; k < n; ++k) lx[k] = vertices[k].x, ly[k] = vertices[k].y, lz[k] = vertices[k].z;
-    const detail::shading_light<T> light{lx.data(), ly.data(), lz.data(), n, {radiance.x, radiance.y, radiance.z},
+    // The light's vertices by axis: on the stack for up to 16 vertices.
+    constexpr std::size_t stack = 16;
+    T buffer[3][stack];
+    std::vector<T> heap(n > stack ? 3 * n : 0);
+    T* axis[3] = {buffer[0], buffer[1], buffer[2]};
+    if (n > stack) axis[0] = heap.data(), axis[1] = heap.data() + n, axis[2] = heap.data() + 2 * n;
+    for (std::size_t k = 0; k < n; ++k)
+        for (int c = 0; c < 3; ++c) axis[c][k] = vertices[k][c];
+    const detail::shading_light<T> light{axis[0], axis[1], axis[2], n, {radiance.x, radiance.y, radiance.z},
                                          side == sidedness::two_sided};
     std::size_t vectorized = 0;
     if constexpr (detail::simd_policy<EdgePolicy, T>) {
