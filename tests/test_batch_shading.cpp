@@ -263,5 +263,12 @@ TEST_CASE("batch shading of many quad lights matches shade_polygon_light light b
                 }
                 CAPTURE(static_cast<int>(isa), roughness, side == ltc::sidedness::two_sided);
                 CHECK(bad == 0);
+                // N = 0: nothing to shade, zeros as from shade_polygon_light.
+                results_soa none(count);
+                ltc::batch::shade_quad_lights<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
+                                                      none.view(), count, isa);
+                for (std::size_t j = 0; j < count; ++j) bad += none.at(j).specular != glm::vec3(0.0f) ||
+                                                               none.at(j).diffuse != glm::vec3(0.0f);
+                CHECK(bad == 0);
             }
 }

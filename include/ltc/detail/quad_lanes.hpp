@@ -35,9 +35,9 @@ struct matrix_and_points<Vertices, std::void_t<decltype(std::declval<const Verti
 
 #if LTC_SIMD
 /// quad_form_factor's sum for the float quad whose vertices (M^-1 p, any scale: normalized here)
-/// are in the lanes of bx, by, bz, or false where the general path must take over: two runs above the horizon, and
-/// the lanes' own hand-backs (a vertex or a crossing outside their range, an edge through the
-/// shading point: lanes.inc).
+/// are in the lanes of bx, by, bz, or false where the general path must take over: two runs
+/// above the horizon, and the lanes' own hand-backs (a vertex or a crossing outside their range,
+/// an edge through the shading point: lanes.inc).
 template <typename Policy, typename VF>
 LTC_INLINE bool quad_form_factor_lanes(VF bx, VF by, VF bz, float& sum) {
     using namespace lanes::baseline;

@@ -115,6 +115,10 @@ void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const g
     const shading_frame<T> frame = make_shading_frame(N, V);
     const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
     const vec3 brdf = F0 * lobe.magnitude + (vec3(T(1)) - F0) * lobe.fresnel;
+    if (!frame.valid) {  // N = 0: nothing to shade, as in ltc::shade_polygon_light
+        for (std::size_t i = 0; i < count; ++i) detail::write(out, i, polygon_light_result<T>{});
+        return;
+    }
     // The lights in the local frame (frame.to_local(p - P)) block by block, then E (M = I) and
     // I_ltc (M = the lobe's M^-1) through the quad kernel.
     constexpr std::size_t block = 256;
@@ -136,10 +140,8 @@ void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const g
         for (std::size_t j = 0; j < b; ++j) {
             const vec3 radiance = detail::item(lights.radiance, base + j);
             polygon_light_result<T> r;
-            if (frame.valid) {
-                r.specular = radiance * brdf * I[j];
-                r.diffuse = albedo * radiance * E[j];
-            }
+            r.specular = radiance * brdf * I[j];
+            r.diffuse = albedo * radiance * E[j];
             detail::write(out, base + j, r);
         }
     }
