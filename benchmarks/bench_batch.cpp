@@ -181,6 +181,7 @@ BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::polynomial);
 BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::avx2);
+BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::avx512);
 BENCHMARK_TEMPLATE(BM_batch_quads, ltc::edge_policy::polynomial, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_quads, minimax_rational, isa::scalar);
 BENCHMARK(BM_batch_ngons_runtime_n);

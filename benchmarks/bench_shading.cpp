@@ -197,6 +197,7 @@ BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);
+BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx512);
 BENCHMARK(BM_batch_quad_lights);
 
 LTC_BENCHMARK_MAIN();

@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -230,4 +231,31 @@ TEST_CASE("batch in double matches the double scalar path", "[batch]") {
             CAPTURE(static_cast<int>(isa), s == ltc::sidedness::two_sided, worst);
             CHECK(violations == 0);
         }
+}
+
+TEST_CASE("batch instruction sets: resolve falls back to the widest available one", "[batch]") {
+    using ltc::batch::isa;
+    CHECK(ltc::batch::available(isa::automatic));
+    CHECK(ltc::batch::available(isa::scalar));
+    CHECK(ltc::batch::resolve(isa::scalar) == isa::scalar);
+    isa widest = isa::scalar;
+    for (const isa i : ltc::batch::instruction_sets) {
+        if (!ltc::batch::available(i)) continue;
+        CHECK(ltc::batch::resolve(i) == i);
+        widest = i;
+    }
+    CHECK(ltc::batch::resolve(isa::automatic) == widest);
+    // An unavailable request runs the next narrower set that is available.
+    isa below = isa::scalar;
+    for (const isa i : ltc::batch::instruction_sets) {
+        if (!ltc::batch::available(i)) CHECK(ltc::batch::resolve(i) == below);
+        else below = i;
+    }
+    const std::size_t widths[] = {1, 4, 8, 16};
+    for (std::size_t k = 0; k < std::size(widths); ++k) {
+        const isa i = ltc::batch::instruction_sets[k];
+        if (!ltc::batch::available(i)) continue;
+        CHECK(ltc::batch::lane_count<float>(i) == widths[k]);
+        CHECK(ltc::batch::lane_count<double>(i) == std::max<std::size_t>(widths[k] / 2, 1));
+    }
 }

@@ -92,8 +92,8 @@ TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions
         const double v[7] = {N.x, N.y, N.z, V.x, V.y, V.z, r};
         for (int k = 0; k < 7; ++k) in[k].push_back(float(v[k]));
     }
-    for (const auto isa : {ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
-        if (!ltc::batch::available(isa)) continue;
+    for (const auto isa : ltc::batch::instruction_sets) {
+        if (isa == ltc::batch::isa::scalar || !ltc::batch::available(isa)) continue;
         ltc_test::lane_stage_results out;
         ltc_test::lane_stages(isa, in, out, count);
         std::size_t handed_back = 0, checked = 0;
@@ -102,6 +102,10 @@ TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions
             const glm::vec3 N(in[0][i], in[1][i], in[2][i]), V(in[3][i], in[4][i], in[5][i]);
             const ltc::shading_frame<float> f = ltc::make_shading_frame(N, V);
             if (out.fallback[i]) {
+                // Only V within rounding of +-N (the kernel's |t| < 32 eps, t's direction then
+                // being rounding noise): sin(N, V) far below 2^-16.
+                const glm::dvec3 Nd(N), Vd(V);
+                CHECK(glm::length(glm::cross(Nd, Vd)) <= 0x1.0p-16 * glm::length(Nd) * glm::length(Vd));
                 ++handed_back;
                 continue;
             }
@@ -130,9 +134,9 @@ TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions
                 CHECK(std::abs(double(out.channel[c][i]) - double(expected[c])) <= bound_c);
             }
         }
-        // Only V within rounding of +-N (not exactly along it) is handed back: none drawn here.
+        // At most the points drawn with V along +-N (i % 97 == 0, i % 89 == 0) are handed back.
         CAPTURE(static_cast<int>(isa), worst);
-        CHECK(handed_back == 0);
-        CHECK(checked == count);
+        CHECK(handed_back <= count / 97 + count / 89 + 2);
+        CHECK(checked + handed_back == count);
     }
 }

@@ -131,7 +131,8 @@ TEST_CASE("batch shading of one light matches shade_polygon_light point by point
     const glm::vec3 radiance(3.0f, 2.0f, 1.0f);
     for (const std::size_t n : {3u, 4u, 5u, 7u, 18u})  // 18: the light beyond the stack buffer
         for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
-            for (const auto isa : {ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
+            for (const auto isa : ltc::batch::instruction_sets) {
+                if (isa == ltc::batch::isa::scalar) continue;
                 if (!ltc::batch::available(isa)) continue;
                 const auto light = ltc_test::random_polygon(g, n, true, n % 2 == 0);
                 // The kernel alone (NaN where it hands a point back), then the public function.
@@ -202,7 +203,7 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
         if (i % 8 == 5) pts.a[9][i] = -3.0f;                               // roughness clamped to 0
     }
     const std::vector<glm::vec3> light = {{-1, 0, 1}, {1, 0, 1}, {1, 1, 1.5f}, {-1, 1, 1.5f}};
-    for (const auto isa : {ltc::batch::isa::scalar, ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
+    for (const auto isa : ltc::batch::instruction_sets) {
         if (!ltc::batch::available(isa)) continue;
         for (const std::size_t n : {2u, 4u}) {
             results_soa out(count);
@@ -247,7 +248,7 @@ TEST_CASE("batch shading of many quad lights matches shade_polygon_light light b
     const glm::vec3 P(0.1f, -0.2f, 0.05f), N(0.2f, 0.1f, 1.0f), V(0.7f, -0.3f, 0.5f), F0(0.9f, 0.6f, 0.3f), albedo(0.5f);
     for (const float roughness : {0.1f, 0.6f})
         for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
-            for (const auto isa : {ltc::batch::isa::scalar, ltc::batch::isa::baseline, ltc::batch::isa::avx2}) {
+            for (const auto isa : ltc::batch::instruction_sets) {
                 if (!ltc::batch::available(isa)) continue;
                 results_soa out(count);
                 ltc::batch::shade_quad_lights<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(), count, isa);

@@ -22,19 +22,17 @@ namespace ltc_fuzz {
 // Every instruction set this build and CPU run (isa::scalar always).
 std::vector<ltc::batch::isa> batch_isas() {
     std::vector<ltc::batch::isa> v;
-    for (const auto i : {ltc::batch::isa::scalar, ltc::batch::isa::baseline, ltc::batch::isa::avx2})
+    for (const auto i : ltc::batch::instruction_sets)
         if (ltc::batch::available(i)) v.push_back(i);
     return v;
 }
 
-// How many leading items `which` may give to its SIMD kernel: whole vectors of 16 (baseline) or
-// 32 (avx2) bytes; the rest (the tail) always goes through the scalar path.
+// How many leading items `which` may give to its SIMD kernel: whole vectors; the rest (the tail)
+// always goes through the scalar path.
 template <typename T>
 std::size_t kernel_items(ltc::batch::isa which, std::size_t count) {
-    const std::size_t w = which == ltc::batch::isa::baseline ? 16 / sizeof(T)
-                          : which == ltc::batch::isa::avx2   ? 32 / sizeof(T)
-                                                             : 0;
-    return w ? count - count % w : 0;
+    const std::size_t w = ltc::batch::lane_count<T>(which);
+    return w > 1 ? count - count % w : 0;
 }
 
 // count items of nv vertices; owns its structure-of-arrays copies, one heap array per vertex and

@@ -79,7 +79,7 @@ struct ngon_view {
 // The instruction sets to test here: every one this build and CPU run.
 inline std::vector<ltc::batch::isa> isas() {
     std::vector<ltc::batch::isa> v;
-    for (const auto i : {ltc::batch::isa::scalar, ltc::batch::isa::baseline, ltc::batch::isa::avx2})
+    for (const auto i : ltc::batch::instruction_sets)
         if (ltc::batch::available(i)) v.push_back(i);
     return v;
 }

@@ -47,11 +47,17 @@ LTC_TEST_LANE_STAGES(baseline, )
 #if LTC_SIMD_AVX2
 LTC_TEST_LANE_STAGES(avx2, LTC_SIMD_AVX2_TARGET)
 #endif
+#if LTC_SIMD_AVX512
+LTC_TEST_LANE_STAGES(avx512, LTC_SIMD_AVX512_TARGET)
+#endif
 #endif
 
-/// The lane stages of `which` (baseline or avx2; the caller checks ltc::batch::available).
+/// The lane stages of `which` (baseline, avx2 or avx512; the caller checks ltc::batch::available).
 inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7], lane_stage_results& out,
                         std::size_t count) {
+#if LTC_SIMD_AVX512
+    if (which == ltc::batch::isa::avx512) return lane_stages_avx512(in, out, count);
+#endif
 #if LTC_SIMD_AVX2
     if (which == ltc::batch::isa::avx2) return lane_stages_avx2(in, out, count);
 #endif
@@ -67,6 +73,10 @@ template <typename Policy>
 std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
                            const ltc::batch::shading_points<float>& points,
                            const ltc::batch::shading_results<float>& out, std::size_t count) {
+#if LTC_SIMD_AVX512
+    if (which == ltc::batch::isa::avx512)
+        return ltc::batch::detail::run_shade_avx512<Policy>(ltc::ggx::table, light, points, out, count);
+#endif
 #if LTC_SIMD_AVX2
     if (which == ltc::batch::isa::avx2)
         return ltc::batch::detail::run_shade_avx2<Policy>(ltc::ggx::table, light, points, out, count);

@@ -1,7 +1,7 @@
 // ltc/detail/batch_simd.hpp -- the batch kernels (built on ltc/detail/lanes.hpp) compiled once
-// per instruction set of ltc/detail/simd.hpp, and their entry points: run_baseline, and run_avx2
-// (compiled for AVX2 + FMA whatever the translation unit's flags; call it only where
-// ltc::simd::avx2::supported()).
+// per instruction set of ltc/detail/simd.hpp, and their entry points: run_baseline, run_avx2 and
+// run_avx512 (compiled for AVX2 + FMA, or AVX-512, whatever the translation unit's flags; call
+// them only where ltc::simd::avx2::supported(), or ltc::simd::avx512::supported()).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -80,6 +80,33 @@ LTC_SIMD_AVX2_TARGET std::size_t run_shade_avx2(const ltc_table& table, const sh
                                                 const shading_points<T>& points, const shading_results<T>& out,
                                                 std::size_t count) {
     return avx2::shade_items<Policy, T>(table, light, points, out, count);
+}
+#endif
+
+#if LTC_SIMD_AVX512
+namespace avx512 {
+using namespace ltc::simd::avx512;
+using namespace ltc::detail::lanes::avx512;
+#define LTC_SIMD_FN LTC_SIMD_AVX512_FN
+#include <ltc/detail/batch_simd_kernel.inc>
+#include <ltc/detail/batch_simd_shading.inc>
+#undef LTC_SIMD_FN
+}  // namespace avx512
+
+/// Items [0, returned) through the AVX-512 kernel (64-byte vectors).
+template <typename Policy, std::size_t N, typename T>
+LTC_SIMD_AVX512_TARGET std::size_t run_avx512(const matrices<T>& mats, std::size_t n, const T* const* x,
+                                              const T* const* y, const T* const* z, T* out, std::size_t count,
+                                              bool two_sided) {
+    return avx512::integrate_items<Policy, N>(mats, n, x, y, z, out, count, two_sided);
+}
+
+/// Points [0, returned) through the AVX-512 shading kernel.
+template <typename Policy, typename T>
+LTC_SIMD_AVX512_TARGET std::size_t run_shade_avx512(const ltc_table& table, const shading_light<T>& light,
+                                                    const shading_points<T>& points, const shading_results<T>& out,
+                                                    std::size_t count) {
+    return avx512::shade_items<Policy, T>(table, light, points, out, count);
 }
 #endif
 

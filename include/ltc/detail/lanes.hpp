@@ -1,6 +1,7 @@
 // ltc/detail/lanes.hpp -- one polygon (or one edge) per SIMD lane: ltc/detail/lanes.inc (the lane
 // primitives, the edge terms of eq. (11), lane_polygon) compiled once per instruction set of
-// ltc/detail/simd.hpp, in ltc::detail::lanes::baseline and, on x86-64, ltc::detail::lanes::avx2.
+// ltc/detail/simd.hpp, in ltc::detail::lanes::baseline and, on x86-64, ltc::detail::lanes::avx2 and
+// ltc::detail::lanes::avx512.
 // Used by the batch kernels (ltc/detail/batch_simd.hpp) and the float quad path
 // (ltc/detail/quad_lanes.hpp).
 #pragma once
@@ -33,6 +34,15 @@ using namespace ltc::simd::avx2;
 #include <ltc/detail/lanes.inc>
 #undef LTC_SIMD_FN
 }  // namespace avx2
+#endif
+
+#if LTC_SIMD_AVX512
+namespace avx512 {
+using namespace ltc::simd::avx512;
+#define LTC_SIMD_FN LTC_SIMD_AVX512_FN
+#include <ltc/detail/lanes.inc>
+#undef LTC_SIMD_FN
+}  // namespace avx512
 #endif
 
 }  // namespace lanes

@@ -13,13 +13,15 @@
 //     re-included once per target.
 // Plain vector types, by contrast, compile to 256-bit instructions in any function compiled for
 // AVX2, whatever the flags of the translation unit. Each instruction set has a namespace below
-// (baseline: 16-byte vectors, SSE2 on x86-64; avx2: 32-byte vectors, AVX2 + FMA) whose functions
+// (baseline: 16-byte vectors, SSE2 on x86-64; avx2: 32-byte vectors, AVX2 + FMA; avx512: 64-byte
+// vectors, AVX-512) whose functions
 // carry that instruction set's target attribute; the kernel (ltc/detail/batch_simd_kernel.inc)
 // is compiled once in each.
 //
 // LTC_SIMD is 1 where the layer is available (GCC or Clang, not CUDA device compilation, not
 // disabled by defining LTC_NO_SIMD before including ltc); elsewhere the batch API runs its scalar
-// path item by item. LTC_SIMD_AVX2 is 1 where the AVX2 kernel is compiled (x86-64).
+// path item by item. LTC_SIMD_AVX2 and LTC_SIMD_AVX512 are 1 where the AVX2 and AVX-512 kernels
+// are compiled (x86-64).
 #pragma once
 
 #if !defined(LTC_NO_SIMD) && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
@@ -30,9 +32,11 @@
 
 #if LTC_SIMD && defined(__x86_64__)
 #define LTC_SIMD_AVX2 1
+#define LTC_SIMD_AVX512 1
 #include <immintrin.h>
 #else
 #define LTC_SIMD_AVX2 0
+#define LTC_SIMD_AVX512 0
 #endif
 
 #if LTC_SIMD
@@ -47,6 +51,12 @@
 #if LTC_SIMD_AVX2
 #define LTC_SIMD_AVX2_TARGET __attribute__((target("avx2,fma")))
 #define LTC_SIMD_AVX2_FN inline __attribute__((always_inline, target("avx2,fma")))
+#endif
+#if LTC_SIMD_AVX512
+// x86-64-v4's AVX-512 subsets (F, CD, BW, DQ, VL), as Intel since Skylake-SP and AMD since Zen 4 have them.
+#define LTC_SIMD_AVX512_TARGET __attribute__((target("avx2,fma,avx512f,avx512cd,avx512bw,avx512dq,avx512vl")))
+#define LTC_SIMD_AVX512_FN \
+    inline __attribute__((always_inline, target("avx2,fma,avx512f,avx512cd,avx512bw,avx512dq,avx512vl")))
 #endif
 
 namespace ltc {
@@ -190,6 +200,68 @@ inline bool supported() {
 }
 
 }  // namespace avx2
+#endif
+
+#if LTC_SIMD_AVX512
+namespace avx512 {
+
+template <typename T>
+using types = vector_types<T, 64>;
+
+/// float: the AVX-512 estimate (relative error <= 2^-14) and one Newton step, as in baseline.
+/// (The masked forms: GCC 12 warns that the unmasked ones read an uninitialized register.)
+template <typename V>
+LTC_SIMD_AVX512_FN V rsqrt(V x) {
+    if constexpr (sizeof(x[0]) == 4) {
+        const V y = (V)_mm512_maskz_rsqrt14_ps(__mmask16(0xffff), (__m512)x);
+        return y * (1.5f - (0.5f * x) * (y * y));
+    } else {
+        return 1.0 / (V)_mm512_maskz_sqrt_pd(__mmask8(0xff), (__m512d)x);
+    }
+}
+
+/// Within 2^-14 of 1 / x (float), or 1 / x itself.
+template <typename V>
+LTC_SIMD_AVX512_FN V rcp_estimate(V x) {
+    if constexpr (sizeof(x[0]) == 4) return (V)_mm512_maskz_rcp14_ps(__mmask16(0xffff), (__m512)x);
+    return 1 / x;
+}
+
+template <typename V>
+LTC_SIMD_AVX512_FN V sqrt(V x) {
+    if constexpr (sizeof(x[0]) == 4) return (V)_mm512_maskz_sqrt_ps(__mmask16(0xffff), (__m512)x);
+    else return (V)_mm512_maskz_sqrt_pd(__mmask8(0xff), (__m512d)x);
+}
+
+template <typename VI>
+LTC_SIMD_AVX512_FN unsigned bits(VI m) {
+    if constexpr (sizeof(m[0]) == 4) return unsigned(_mm512_movepi32_mask((__m512i)m));
+    else return unsigned(_mm512_movepi64_mask((__m512i)m));
+}
+
+template <typename VI>
+LTC_SIMD_AVX512_FN bool all(VI m) {
+    return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
+}
+
+/// Whether this CPU (and its operating system, which must save the 512-bit registers: the
+/// compiler's check includes it) runs the AVX-512 kernel, checked once.
+inline bool supported() {
+#if defined(__AVX512F__) && defined(__AVX512CD__) && defined(__AVX512BW__) && defined(__AVX512DQ__) && \
+    defined(__AVX512VL__) && defined(__FMA__)
+    return true;
+#else
+    static const bool yes = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
+               __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") &&
+               __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    }();
+    return yes;
+#endif
+}
+
+}  // namespace avx512
 #endif
 
 }  // namespace simd

@@ -14,10 +14,13 @@
 // minimax_rational or polynomial for double lanes at float accuracy).
 //
 // How (ltc/detail/batch_simd_kernel.inc): explicit SIMD through the compiler's vector types
-// (ltc/detail/simd.hpp says why not a SIMD library), one kernel compiled for two instruction sets
-// and chosen at run time, so that a build without -march runs 8 floats wide on an AVX2 CPU:
+// (ltc/detail/simd.hpp says why not a SIMD library), one kernel compiled for three instruction sets
+// and chosen at run time, so that a build without -march runs 8 or 16 floats wide on an AVX2 or
+// AVX-512 CPU:
 //   isa::baseline  16-byte vectors: 4 floats (SSE2 on x86-64, NEON on AArch64), 2 doubles;
 //   isa::avx2      32-byte vectors with FMA: 8 floats, 4 doubles (x86-64 with AVX2 and FMA);
+//   isa::avx512    64-byte vectors: 16 floats, 8 doubles (x86-64 with AVX-512 F, CD, BW, DQ and
+//                  VL, x86-64-v4: Intel since Skylake-SP, AMD since Zen 4);
 //   isa::scalar    the scalar path, item by item.
 // isa::automatic (the default) takes the widest the CPU runs; an unavailable request falls back
 // to the next narrower one. Defining LTC_NO_SIMD before including ltc (or compiling with a
@@ -42,12 +45,16 @@
 #include <ltc/shading/batch_soa.hpp>  // matrices, polygon_soa, quad_soa, ngon_soa
 
 #include <cstddef>
+#include <iterator>
 
 namespace ltc {
 namespace batch {
 
 /// The instruction set a batch runs with (see the file comment).
-enum class isa { automatic, scalar, baseline, avx2 };
+enum class isa { automatic, scalar, baseline, avx2, avx512 };
+
+/// Every instruction set but automatic, narrowest first.
+inline constexpr isa instruction_sets[] = {isa::scalar, isa::baseline, isa::avx2, isa::avx512};
 
 /// Whether this build and this CPU run `which` (automatic and scalar: always).
 inline bool available(isa which) {
@@ -61,16 +68,37 @@ inline bool available(isa which) {
 #else
             return false;
 #endif
+        case isa::avx512:
+#if LTC_SIMD_AVX512
+            return simd::avx512::supported();
+#else
+            return false;
+#endif
     }
     return false;
 }
 
-/// The instruction set that `which` runs with here: itself if available, else the next narrower.
+/// The instruction set that `which` runs with here: itself if available, else the next narrower
+/// one that is (automatic: the widest available).
 inline isa resolve(isa which) {
-    if (which == isa::automatic || (which == isa::avx2 && !available(isa::avx2)))
-        return available(isa::avx2) ? isa::avx2 : available(isa::baseline) ? isa::baseline : isa::scalar;
-    if (which == isa::baseline && !available(isa::baseline)) return isa::scalar;
-    return which;
+    if (which == isa::automatic) which = isa::avx512;
+    for (std::size_t k = std::size(instruction_sets); k-- > 0;)
+        if (instruction_sets[k] == which) {
+            while (!available(instruction_sets[k])) --k;  // scalar is always available
+            return instruction_sets[k];
+        }
+    return isa::scalar;
+}
+
+/// How many items of T one vector of `which` holds (1 for scalar; automatic: resolved first).
+template <typename T>
+std::size_t lane_count(isa which) {
+    switch (resolve(which)) {
+        case isa::baseline: return 16 / sizeof(T);
+        case isa::avx2: return 32 / sizeof(T);
+        case isa::avx512: return 64 / sizeof(T);
+        default: return 1;
+    }
 }
 
 namespace detail {
@@ -93,6 +121,9 @@ void integrate(const matrices<T>& mats, std::size_t n, const T* const* x, const 
             case isa::baseline: vectorized = run_baseline<EdgePolicy, N>(mats, n, x, y, z, out, count, two_sided); break;
 #if LTC_SIMD_AVX2
             case isa::avx2: vectorized = run_avx2<EdgePolicy, N>(mats, n, x, y, z, out, count, two_sided); break;
+#endif
+#if LTC_SIMD_AVX512
+            case isa::avx512: vectorized = run_avx512<EdgePolicy, N>(mats, n, x, y, z, out, count, two_sided); break;
 #endif
             default: break;
         }

@@ -80,6 +80,11 @@ void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& 
 #if LTC_SIMD_AVX2
                 case isa::avx2: vectorized = detail::run_shade_avx2<EdgePolicy>(ggx::table, light, points, out, count); break;
 #endif
+#if LTC_SIMD_AVX512
+                case isa::avx512:
+                    vectorized = detail::run_shade_avx512<EdgePolicy>(ggx::table, light, points, out, count);
+                    break;
+#endif
                 default: break;
             }
 #endif
