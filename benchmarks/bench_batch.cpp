@@ -7,10 +7,10 @@
 // Built four times by CMake (benchmarks/CMakeLists.txt): bench_batch (the build type's flags: -O3
 // in Release), bench_batch_o2 (-O2), bench_batch_avx2 and bench_batch_o2_avx2 (the same with
 // -march=x86-64-v3, which exit without running where the CPU lacks AVX2 or FMA). Without -march
-// the batch still runs its AVX2 kernel where the CPU has it (run-time dispatch): the rows
-// isa::baseline and isa::avx2 pin the instruction set. Run them with --benchmark_repetitions=5
-// and compare medians; the throughput ratio batch / reference is meaningful within one
-// executable (both sides are compiled with the same flags).
+// the batch still runs its AVX2 or AVX-512 kernel where the CPU has it (run-time dispatch): the
+// rows isa::baseline, isa::avx2 and isa::avx512 pin the instruction set. Run them with
+// --benchmark_repetitions=5 and compare medians; the throughput ratio batch / reference is
+// meaningful within one executable (both sides are compiled with the same flags).
 #include "bench_main.hpp"
 #include "configurations.hpp"
 #include "reference_shader.hpp"

@@ -24,15 +24,19 @@ BATCH_ROWS = [
     ("BM_reference_shader", "reference port"),
     ("BM_library_scalar<ltc::edge_policy::exact>", "scalar, exact"),
     ("BM_library_scalar<minimax_rational>", "scalar, default (minimax_rational)"),
-    ("BM_batch_quads<minimax_rational, isa::baseline>", "batch, baseline ISA"),
-    ("BM_batch_quads<minimax_rational, isa::automatic>", "batch, automatic ISA"),
+    ("BM_batch_quads<minimax_rational, isa::baseline>", "batch, baseline (SSE2)"),
+    ("BM_batch_quads<minimax_rational, isa::avx2>", "batch, AVX2"),
+    ("BM_batch_quads<minimax_rational, isa::avx512>", "batch, AVX-512"),
+    ("BM_batch_quads<minimax_rational, isa::automatic>", "batch, automatic"),
 ]
 SHADING_ROWS = [
     ("BM_reference_shading", "reference shading port"),
     ("BM_library_scalar<ltc::edge_policy::exact>", "shade_polygon_light, exact"),
     ("BM_library_scalar<ltc::edge_policy::minimax_rational>", "shade_polygon_light, default"),
-    ("BM_batch_shading<isa::baseline>", "batch, baseline ISA"),
-    ("BM_batch_shading<isa::automatic>", "batch, automatic ISA"),
+    ("BM_batch_shading<isa::baseline>", "batch, baseline (SSE2)"),
+    ("BM_batch_shading<isa::avx2>", "batch, AVX2"),
+    ("BM_batch_shading<isa::avx512>", "batch, AVX-512"),
+    ("BM_batch_shading<isa::automatic>", "batch, automatic"),
 ]
 
 
