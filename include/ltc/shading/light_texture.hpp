@@ -64,6 +64,10 @@
 // examples/textured_error_report.cpp on 2 hardware threads: a 1024 x 1024 image, 13 levels,
 // 0.74 s at the default margin 0.125 and 3.3 s at margin 0.25 (the margin dominates).
 //
+// The constructor also builds the image's cell pyramid (cells(): means and ranges of 2^k x 2^k
+// texel blocks, about 16 bytes per texel in float) for the exact integrals of
+// ltc/shading/textured_cells.hpp.
+//
 // Storage: float RGB whatever T is. Levels 0 to 2 are at the texel pitch, then each level has a
 // quarter of the samples of the previous one: about (3 + 1/3) (1 + 2 margin)^2 width height
 // 12 bytes (65.5 MB for 1024 x 1024 at the default margin 0.125).
@@ -71,6 +75,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/texture_filter.hpp>  // texture_axis, gaussian_taps, parallel_for, lerp_exact
+#include <ltc/shading/cell_pyramid.hpp>
 
 #include <glm/glm.hpp>
 
@@ -124,16 +129,9 @@ class light_texture {
     /// non-finite margin, or a non-finite texel (an infinite radiance would make every level
     /// that sees it infinite or NaN).
     light_texture(int width, int height, const vec3* linear_rgb, double margin = default_margin)
-        : width_(width), height_(height), margin_(margin) {
-        if (width <= 0 || height <= 0 || linear_rgb == nullptr)
-            throw std::invalid_argument("ltc::light_texture: empty image");
-        if (!(margin >= 0.0) || !std::isfinite(margin)) throw std::invalid_argument("ltc::light_texture: bad margin");
+        : width_(width), height_(height), margin_(margin), cells_(validated(width, height, linear_rgb, margin)) {
         std::vector<glm::dvec3> image(std::size_t(width) * height);
-        for (std::size_t i = 0; i < image.size(); ++i) {
-            image[i] = glm::dvec3(linear_rgb[i]);
-            if (!std::isfinite(image[i].x) || !std::isfinite(image[i].y) || !std::isfinite(image[i].z))
-                throw std::invalid_argument("ltc::light_texture: non-finite texel");
-        }
+        for (std::size_t i = 0; i < image.size(); ++i) image[i] = glm::dvec3(linear_rgb[i]);
         const int n = std::max(width, height);
         sigma_1_ = 1.0 / n;
         for (int k = 0;; ++k) {
@@ -142,6 +140,10 @@ class light_texture {
             if (sigma >= 2.0) break;
         }
     }
+
+    /// The image as constant cells (ltc/shading/cell_pyramid.hpp): the data of the exact
+    /// textured integrals (ltc/shading/textured_cells.hpp).
+    const cell_pyramid<T>& cells() const { return cells_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -183,6 +185,18 @@ class light_texture {
     }
 
   private:
+    static cell_pyramid<T> validated(int width, int height, const vec3* linear_rgb, double margin) {
+        if (width <= 0 || height <= 0 || linear_rgb == nullptr)
+            throw std::invalid_argument("ltc::light_texture: empty image");
+        if (!(margin >= 0.0) || !std::isfinite(margin)) throw std::invalid_argument("ltc::light_texture: bad margin");
+        for (std::size_t i = 0; i < std::size_t(width) * std::size_t(height); ++i) {
+            const glm::dvec3 c(linear_rgb[i]);
+            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
+                throw std::invalid_argument("ltc::light_texture: non-finite texel");
+        }
+        return cell_pyramid<T>(width, height, linear_rgb);
+    }
+
     static detail::texture_axis make_axis(int texels, double sigma, double margin) {
         detail::texture_axis a;
         a.texels = texels;
@@ -255,6 +269,7 @@ class light_texture {
 
     int width_, height_;
     double margin_;
+    cell_pyramid<T> cells_;
     double sigma_1_ = 1;
     std::vector<level> levels_;
 };
