@@ -106,6 +106,19 @@ inline C bilinear_image_lookup(int width, int height, const C* rgb, T u, T v) {
     return a + fy * (b - a);
 }
 
+/// The texel under uv of an unfiltered width x height row-major RGB image (texel (x, y) covers
+/// [x / width, (x + 1) / width] x [y / height, (y + 1) / height], clamp-to-edge): the radiance of
+/// the texel-constant texture, which the exact cell integrals (ltc/shading/textured_cells.hpp)
+/// integrate. Non-finite uv -> centre.
+template <typename C, typename T>
+inline C nearest_image_lookup(int width, int height, const C* rgb, T u, T v) {
+    if (!std::isfinite(static_cast<double>(u))) u = T(0.5);
+    if (!std::isfinite(static_cast<double>(v))) v = T(0.5);
+    const double x = std::min(std::max(std::floor(double(u) * width), 0.0), double(width - 1));
+    const double y = std::min(std::max(std::floor(double(v) * height), 0.0), double(height - 1));
+    return rgb[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+}
+
 /// The prefiltered texture of a textured polygonal light (file comment). T is the scalar type of
 /// the lookup's coordinates; the levels are float RGB.
 template <typename T>
