@@ -32,13 +32,14 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
+#include <ltc/shading/batch.hpp>
 #include <ltc/shading/cell_pyramid.hpp>
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cstddef>
-#include <queue>
+#include <type_traits>
 #include <vector>
 
 namespace ltc {
@@ -67,6 +68,76 @@ struct cell_leaf {
     bool operator<(const cell_leaf& o) const { return bound < o.bound; }
 };
 
+/// I_D of the cells (child_k, child_i, child_j)[0..count): float through the batch kernel
+/// (ltc/shading/batch.hpp, the instruction set whose width the count fills), double one by one
+/// (its default policy, exact, has no kernel).
+template <typename T, typename Corners>
+inline void cell_integrals(const transformed<clamped_cosine<T>>& d, sidedness side, const Corners& corners,
+                           const int* k, const int* i, const int* j, int count, T* out, std::size_t& integrals) {
+    using vec3 = glm::vec<3, T>;
+    if constexpr (std::is_same_v<T, float>) {
+        T x[4][8], y[4][8], z[4][8];
+        for (int m = 0; m < count; ++m) {
+            vec3 c[4];
+            corners(k[m], i[m], j[m], c);
+            for (int v = 0; v < 4; ++v) x[v][m] = c[v].x, y[v][m] = c[v].y, z[v][m] = c[v].z;
+        }
+        batch::quad_soa<T> soa;
+        soa.m_inv = batch::matrices<T>::same_for_all(d.inverse_matrix());
+        for (int v = 0; v < 4; ++v) soa.x[v] = x[v], soa.y[v] = y[v], soa.z[v] = z[v];
+        const batch::isa which = count >= 8 ? batch::isa::avx2 : batch::isa::baseline;
+        batch::integrate_quads(soa, out, std::size_t(count), side, which);
+        integrals += std::size_t(count);
+    } else {
+        for (int m = 0; m < count; ++m) {
+            vec3 c[4];
+            corners(k[m], i[m], j[m], c);
+            out[m] = d.integrate(c, 4, side);
+            ++integrals;
+        }
+    }
+}
+
+/// The leaves that may still be refined, largest bound first: a linear scan for the usual small
+/// budgets (cheaper than a heap's moves), a binary heap for large ones.
+template <typename T>
+class open_leaves {
+  public:
+    open_leaves(cell_leaf<T>* storage, bool heap) : data_(storage), heap_(heap) {}
+    std::size_t size() const { return count_; }
+    const cell_leaf<T>& operator[](std::size_t m) const { return data_[m]; }
+    void push(const cell_leaf<T>& l) {
+        data_[count_++] = l;
+        if (heap_) std::push_heap(data_, data_ + count_);
+    }
+    /// Removes and returns the leaf of largest bound.
+    cell_leaf<T> pop() {
+        if (heap_) {
+            std::pop_heap(data_, data_ + count_);
+            return data_[--count_];
+        }
+        std::size_t best = 0;
+        for (std::size_t m = 1; m < count_; ++m)
+            if (data_[best].bound < data_[m].bound) best = m;
+        const cell_leaf<T> l = data_[best];
+        data_[best] = data_[--count_];
+        return l;
+    }
+    /// The leaf pop() would return.
+    const cell_leaf<T>& top() const {
+        if (heap_) return data_[0];
+        std::size_t best = 0;
+        for (std::size_t m = 1; m < count_; ++m)
+            if (data_[best].bound < data_[m].bound) best = m;
+        return data_[best];
+    }
+
+  private:
+    cell_leaf<T>* data_;
+    bool heap_;
+    std::size_t count_ = 0;
+};
+
 }  // namespace detail
 
 /// The integral of the texel-constant texture times D over the quad, adaptively (file comment).
@@ -80,13 +151,17 @@ inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine
     cells_result<T> r;
     const vec3 q0 = quad[0], e1 = quad[1] - quad[0], e3 = quad[3] - quad[0];
     const T du = T(1) / T(cells.width()), dv = T(1) / T(cells.height());
-    const auto integral = [&](int k, int i, int j) {
+    // The quad of cell (k, i, j), corners from the texel indices (neighbours share them bit for bit).
+    const auto corners = [&](int k, int i, int j, vec3 (&c)[4]) {
         int x0, y0, x1, y1;
         cells.texels(k, i, j, x0, y0, x1, y1);
-        // Corners from the texel indices, so that neighbours share them bit for bit.
         const T u0 = T(x0) * du, u1 = T(x1) * du, v0 = T(y0) * dv, v1 = T(y1) * dv;
-        const vec3 c[4] = {q0 + u0 * e1 + v0 * e3, q0 + u1 * e1 + v0 * e3, q0 + u1 * e1 + v1 * e3,
-                           q0 + u0 * e1 + v1 * e3};
+        c[0] = q0 + u0 * e1 + v0 * e3, c[1] = q0 + u1 * e1 + v0 * e3;
+        c[2] = q0 + u1 * e1 + v1 * e3, c[3] = q0 + u0 * e1 + v1 * e3;
+    };
+    const auto integral = [&](int k, int i, int j) {
+        vec3 c[4];
+        corners(k, i, j, c);
         ++r.integrals;
         return d.integrate(c, 4, side);
     };
@@ -94,50 +169,74 @@ inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine
         const T bound = k == 0 ? T(0) : cells.range(k, i, j) * i_d;
         return leaf{bound, i_d, k, i, j};
     };
-    const int top = cells.level_count() - 1;
-    std::priority_queue<leaf> open;  // leaves that may be refined, largest bound first
-    std::vector<leaf> done;          // exact leaves
-    const leaf root = make(top, 0, 0, integral(top, 0, 0));
-    (root.bound > T(0) ? open.push(root) : done.push_back(root));
-    std::size_t leaves = 1;
-    const std::size_t max_cells = std::max<std::size_t>(budget.max_cells, 1);
     const auto contribution = [&](const leaf& l) { return double(l.i_d) * glm::dvec3(cells.mean(l.k, l.i, l.j)); };
-    double bound_sum = double(root.bound);
-    glm::dvec3 running = contribution(root);  // the value of the current leaves (for the tolerance)
-    while (!open.empty()) {
-        const leaf c = open.top();
+    const int top = cells.level_count() - 1;
+    const std::size_t max_cells = std::max<std::size_t>(budget.max_cells, 1);
+    // The leaves that may still be refined: on the stack for the usual budgets (no allocation
+    // per shading). Exact leaves are only summed.
+    constexpr std::size_t stack_leaves = 64;
+    leaf stack[stack_leaves];
+    std::vector<leaf> heap_storage(max_cells > stack_leaves ? max_cells : 0);
+    detail::open_leaves<T> open(max_cells > stack_leaves ? heap_storage.data() : stack, max_cells > stack_leaves);
+    glm::dvec3 exact_sum(0.0);
+    const auto add = [&](const leaf& l) {
+        if (l.bound > T(0)) open.push(l);
+        else exact_sum += contribution(l);
+    };
+    double bound_sum = 0;
+    glm::dvec3 running(0.0);  // the value of the current leaves (for the tolerance)
+    const leaf root = make(top, 0, 0, integral(top, 0, 0));
+    add(root);
+    bound_sum += double(root.bound);
+    running += contribution(root);
+    std::size_t leaves = 1;
+    // Each step refines the two leaves of largest bound (one if the budget allows only one), so
+    // that their up to 8 children are integrated together: 8 lanes of the float batch kernel.
+    while (open.size() > 0) {
         const double value = std::max(running.x, std::max(running.y, running.z));
         if (budget.tolerance > 0 && bound_sum <= budget.tolerance * value) break;
-        // The children: the cells of level k - 1 inside c.
-        leaf child[4];
-        int n = 0;
-        for (int b = 0; b < 2; ++b)
-            for (int a = 0; a < 2; ++a) {
-                const int ci = 2 * c.i + a, cj = 2 * c.j + b;
-                if (ci < cells.cells_x(c.k - 1) && cj < cells.cells_y(c.k - 1)) child[n++] = leaf{T(0), T(0), c.k - 1, ci, cj};
-            }
-        if (n > 1 && leaves - 1 + std::size_t(n) > max_cells) break;
-        open.pop();
-        bound_sum -= double(c.bound);
-        running -= contribution(c);
-        for (int m = 0; m < n; ++m) {
-            // One child covers the same texels: its integral is the parent's.
-            const T i_d = n == 1 ? c.i_d : integral(child[m].k, child[m].i, child[m].j);
-            const leaf l = make(child[m].k, child[m].i, child[m].j, i_d);
+        leaf parent[2];
+        int child_k[8], child_i[8], child_j[8], child_of[8];
+        int parents = 0, children = 0;
+        while (parents < 2 && open.size() > 0) {
+            const leaf& c = open.top();
+            int n = 0;
+            for (int b = 0; b < 2; ++b)
+                for (int a = 0; a < 2; ++a)
+                    if (2 * c.i + a < cells.cells_x(c.k - 1) && 2 * c.j + b < cells.cells_y(c.k - 1)) {
+                        child_k[children + n] = c.k - 1, child_i[children + n] = 2 * c.i + a;
+                        child_j[children + n] = 2 * c.j + b, child_of[children + n] = parents;
+                        ++n;
+                    }
+            if (n > 1 && leaves - 1 + std::size_t(n) > max_cells) break;
+            const leaf popped = open.pop();
+            bound_sum -= double(popped.bound);
+            running -= contribution(popped);
+            leaves += std::size_t(n) - 1;
+            parent[parents++] = popped;
+            children += n;
+        }
+        if (parents == 0) break;
+        T i_d[8];
+        detail::cell_integrals(d, side, corners, child_k, child_i, child_j, children, i_d, r.integrals);
+        for (int m = 0; m < children; ++m) {
+            // A parent with one child (the same texels): the child's integral is the parent's.
+            const leaf& p = parent[child_of[m]];
+            const bool only = (m == 0 || child_of[m - 1] != child_of[m]) &&
+                              (m + 1 == children || child_of[m + 1] != child_of[m]);
+            const leaf l = make(child_k[m], child_i[m], child_j[m], only ? p.i_d : i_d[m]);
             bound_sum += double(l.bound);
             running += contribution(l);
-            (l.bound > T(0) ? open.push(l) : done.push_back(l));
+            add(l);
         }
-        leaves += std::size_t(n) - 1;
     }
-    glm::dvec3 sum(0.0);  // summed afresh: the running value drifts by its subtractions
+    // Summed afresh: the running value drifts by its subtractions.
+    glm::dvec3 sum = exact_sum;
     double bound = 0;
-    const auto add = [&](const leaf& l) {
-        sum += contribution(l);
-        bound += double(l.bound);
-    };
-    for (const leaf& l : done) add(l);
-    for (; !open.empty(); open.pop()) add(open.top());
+    for (std::size_t m = 0; m < open.size(); ++m) {
+        sum += contribution(open[m]);
+        bound += double(open[m].bound);
+    }
     r.value = vec3(sum);
     r.error_bound = T(bound);
     r.cells = leaves;
