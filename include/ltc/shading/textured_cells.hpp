@@ -140,12 +140,13 @@ class open_leaves {
 
 }  // namespace detail
 
-/// The integral of the texel-constant texture times D over the quad, adaptively (file comment).
-/// Two-sided by default, like transformed::integrate.
-template <typename T>
-inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
-                                                const cell_pyramid<T>& cells, sidedness side = sidedness::two_sided,
-                                                const cell_budget& budget = cell_budget()) {
+/// integrate_textured_cells with the radiance of the leaves that remain inexact (range > 0,
+/// above level 0) given by open_value(k, i, j) -> glm::dvec3 instead of their mean (the quick
+/// policy of ltc/shading/textured_light.hpp); error_bound then bounds the means' version only.
+template <typename T, typename OpenValue>
+inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
+                                                     const cell_pyramid<T>& cells, sidedness side,
+                                                     const cell_budget& budget, const OpenValue& open_value) {
     using vec3 = glm::vec<3, T>;
     using leaf = detail::cell_leaf<T>;
     cells_result<T> r;
@@ -234,13 +235,23 @@ inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine
     glm::dvec3 sum = exact_sum;
     double bound = 0;
     for (std::size_t m = 0; m < open.size(); ++m) {
-        sum += contribution(open[m]);
+        sum += double(open[m].i_d) * glm::dvec3(open_value(open[m].k, open[m].i, open[m].j));
         bound += double(open[m].bound);
     }
     r.value = vec3(sum);
     r.error_bound = T(bound);
     r.cells = leaves;
     return r;
+}
+
+/// The integral of the texel-constant texture times D over the quad, adaptively (file comment).
+/// Two-sided by default, like transformed::integrate.
+template <typename T>
+inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
+                                                const cell_pyramid<T>& cells, sidedness side = sidedness::two_sided,
+                                                const cell_budget& budget = cell_budget()) {
+    return integrate_textured_cells_with(d, quad, cells, side, budget,
+                                         [&](int k, int i, int j) { return cells.mean(k, i, j); });
 }
 
 }  // namespace ltc

@@ -1,0 +1,23 @@
+// textured_error_report/parallel_for.hpp -- f(i) for i in [0, n) on worker threads (indices handed
+// out in order).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace textured_error_report {
+
+template <typename F>
+void parallel_for(std::size_t n, unsigned threads, F&& f) {
+    std::atomic<std::size_t> next{0};
+    std::vector<std::thread> pool;
+    for (unsigned k = 0; k < threads; ++k)
+        pool.emplace_back([&] {
+            for (std::size_t i; (i = next.fetch_add(1)) < n;) f(i);
+        });
+    for (auto& t : pool) t.join();
+}
+
+}  // namespace textured_error_report
