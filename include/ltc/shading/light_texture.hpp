@@ -61,7 +61,7 @@
 // margin the kernel width grows with d, O(n^3 margin^2) per level in the worst case (level 0).
 // Rows and columns are split over std::thread::hardware_concurrency() threads (the 1D taps and
 // the thread split: ltc/detail/texture_filter.hpp). Measured by
-// examples/textured_error_report.cpp on 2 hardware threads: a 1024 x 1024 image, 13 levels,
+// examples/textured_error_report/ on 2 hardware threads: a 1024 x 1024 image, 13 levels,
 // 0.74 s at the default margin 0.125 and 3.3 s at margin 0.25 (the margin dominates).
 //
 // The constructor also builds the image's cell pyramid (cells(): means and ranges of 2^k x 2^k

@@ -62,21 +62,24 @@
 // (sigma is isotropic in uv, so non-square quads are filtered isotropically in uv, not in
 // space) and the variation of the cosine over the polygon are ignored (section 5.4), and the
 // fetch point is the foot of the perpendicular, not where the lobe's energy lands. Measured by
-// examples/textured_error_report.cpp (|I_D I_L - MC| / MC of int L D, 177 configurations:
-// diffuse and GGX roughness 0.1-1, theta_v 0-80 deg, distance 0.5-4, facing / tilted / vertical
-// 1 x 1 lights; 64 x 64 textures; MC standard error 0.6%):
-//   - smooth gradient: mean 1.8-4.2% by lobe, p95 <= 10%, max 11% (worst for sharp lobes at
-//     theta_v = 80 deg); a slight underestimate on average (-0.9%).
-//   - 4-texel checker: mean <= 0.6%, max 2.1%: any filter wider than a few cells returns the
-//     mean, which is right here.
-//   - a small bright detail (17% of the energy in 0.2% of the area): mean 13-43%, p95 80-90%,
-//     max 330%. This is where it fails: a sharp lobe whose highlight falls on the detail (or
-//     next to it) is fetched at the foot point with a filter of the wrong width and shape, so
-//     the detail is missed (errors near -90%: the result is the background) or smeared over the
-//     wrong place (+150% to +330% at distance 0.5, roughness 0.25-0.5, theta_v 60-80 deg).
-//     The bias is -9.5% on average. The paper presents I_L as an approximation for this reason.
+// examples/textured_error_report/ (|I_D I_L - MC| / MC of int L D with MC of the texel-constant
+// texture, 177 configurations: diffuse and GGX roughness 0.1-1, theta_v 0-80 deg, distance
+// 0.5-4, facing / tilted / vertical 1 x 1 lights; 64 x 64 textures; MC standard error 0.3-0.9%),
+// mean / p95 / max:
+//   - smooth gradient 2.6% / 8.0% / 14%, smooth blobs 11% / 52% / 67% (worst for sharp lobes:
+//     a sharp lobe fetched a few texels off the right place on a steep slope);
+//   - 4-texel checker 3.2% / 24% / 43%;
+//   - a small bright detail (17% of the energy in 0.2% of the area): 28% / 84% / 329%. This is
+//     where it fails: a sharp lobe whose highlight falls on the detail (or next to it) is
+//     fetched at the foot point with a filter of the wrong width and shape, so the detail is
+//     missed (errors near -90%: the result is the background) or smeared over the wrong place
+//     (+150% to +330% at distance 0.5, roughness 0.25-0.5, theta_v 60-80 deg). The bias is
+//     -9.5% on average. The paper presents I_L as an approximation for this reason.
+// The cell methods: quick_cells 0.47% / 2.4% / 4.9%, 3.2% / 9.0% / 23%, 2.3% / 13% / 42% and
+// 1.1% / 2.7% / 3.9% on the same four; exact_cells (64 cells) at most 0.75% mean and 3.0% max on
+// every texture (the README's table).
 // Shading errors (magnitude I_D I_L against MC of int L rho cos) add the GGX fit's own error
-// (mean 3.4-11% by roughness, up to 88% at roughness 0.1 and grazing view in this grid).
+// (mean 3.5-11% by roughness, up to 88% at roughness 0.1 and grazing view in this grid).
 #pragma once
 
 #include <ltc/core/clamped_cosine.hpp>
