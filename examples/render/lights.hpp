@@ -69,10 +69,12 @@ struct textured_light {
     image picture;  // linear radiance (the texture times the light's radiance scale)
     std::unique_ptr<ltc::light_texture<float>> prefiltered;  // the LTC render's levels
     std::unique_ptr<ltc::textured_ground_truth::texel_distribution> area_density;  // reference
-    /// The radiance at uv: the unfiltered texture, bilinear (what both renders draw and what the
-    /// reference integrates).
+    /// The radiance at uv: the texel-constant texture, each texel's colour over its whole square
+    /// (ltc::nearest_image_lookup; what both renders draw where the camera sees the light, and what
+    /// the reference integrates: the texture whose integral the exact cell methods compute; see
+    /// main.cpp's file comment).
     vec3 radiance(double u, double v) const {
-        return ltc::bilinear_image_lookup(picture.width, picture.height, picture.texels.data(), u, v);
+        return ltc::nearest_image_lookup(picture.width, picture.height, picture.texels.data(), u, v);
     }
 };
 

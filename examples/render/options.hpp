@@ -1,13 +1,26 @@
 // render/options.hpp -- the command line: the options, their defaults, --help and the parser.
 #pragma once
 
+#include <ltc/shading/textured_light.hpp>
+
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace render {
+
+/// The name of a textured method, as --textured-method spells it (and the image names use).
+inline const char* method_name(ltc::textured_method m) {
+    switch (m) {
+        case ltc::textured_method::quick_cells: return "quick_cells";
+        case ltc::textured_method::exact_cells: return "exact_cells";
+        default: return "fetch";
+    }
+}
 
 struct options {
     int width = 256;
@@ -20,21 +33,27 @@ struct options {
     bool textured = true;      // the textured light (--no-texture: the two polygonal lights only)
     std::string texture;       // image file of the textured light; empty: the stained glass
     double texture_radiance = 8.0;  // radiance of a white texel
+    // --textured-method: the methods of ltc::shade_textured_quad_light to render the textured
+    // light with; one, or all three (fetch, quick_cells, exact_cells) with --textured-method all.
+    std::vector<ltc::textured_method> textured_methods{ltc::textured_method::fetch};
+    std::size_t cells = 64;  // --cells: exact_cells' budget (ltc::cell_budget::max_cells)
 };
 
 inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]\n"
-        "          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R] [--help]\n"
+        "          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]\n"
+        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--help]\n"
         "\n"
         "Renders a tiled floor (GGX dielectric, gold and copper; roughness 0.1 .. 0.9) lit by a\n"
         "rotated rectangular light, a pentagonal light and, between them, a textured quad light (a\n"
         "procedural stained-glass window, or FILE), twice: with LTC (ltc::shade_polygon_light;\n"
-        "ltc::shade_textured_quad_light, the prefiltered-texture fetch I_D I_L) and with a Monte\n"
-        "Carlo reference of the same GGX BRDF with Schlick's Fresnel (ltc::ground_truth::integrate,\n"
-        "BRDF and light sampling with MIS, the diffuse term in closed form; for the textured light\n"
-        "ltc::textured_ground_truth::integrate of the unfiltered texture, specular and diffuse), and\n"
-        "writes into DIR:\n"
+        "ltc::shade_textured_quad_light by --textured-method, by default the prefiltered-texture\n"
+        "fetch I_D I_L) and with a Monte Carlo reference of the same GGX BRDF with Schlick's Fresnel\n"
+        "(ltc::ground_truth::integrate, BRDF and light sampling with MIS, the diffuse term in closed\n"
+        "form; for the textured light ltc::textured_ground_truth::integrate of the texel-constant\n"
+        "texture -- each texel's colour over its whole square, ltc::nearest_image_lookup: the\n"
+        "texture the exact cell integrals integrate -- specular and diffuse), and writes into DIR:\n"
         "  ltc.png             the LTC render\n"
         "  reference.png       the Monte Carlo reference\n"
         "  error.png           relative error of luminance, |Y_ltc - Y_ref| / max(Y_ref, 0.01 / E), on\n"
@@ -42,10 +61,15 @@ inline void print_help(const char* argv0) {
         "                      above red; background and emitters black\n"
         "  textured_error.png  the same for the textured light's contribution alone (not written\n"
         "                      with --no-texture)\n"
+        "  with --textured-method all, also for each method M (fetch, quick_cells, exact_cells):\n"
+        "  ltc_M.png           the LTC render with the textured light shaded by M\n"
+        "  textured_error_M.png  the textured light's error image of M\n"
+        "                      (ltc.png, error.png and textured_error.png are then those of fetch)\n"
         "It prints the render times, error statistics over the floor pixels with Y_ref >= 0.01 / E\n"
         "(mean, median, 95th percentile, max; per tile) and the reference's own Monte Carlo noise:\n"
         "for all lights, for the two polygonal lights alone (the numbers of --no-texture) and for\n"
-        "the textured light's contribution alone.\n"
+        "the textured light's contribution alone (with --textured-method all: for each method,\n"
+        "against the same reference, with its LTC time, then side by side).\n"
         "\n"
         "  --width W        image width in pixels (default 256)\n"
         "  --height H       image height in pixels (default 160)\n"
@@ -68,6 +92,17 @@ inline void print_help(const char* argv0) {
         "                   polygonal lights alone\n"
         "  --texture-radiance R  radiance of a white texel (default 8; the polygonal lights have\n"
         "                   radiance 6 times their colour)\n"
+        "  --textured-method M  how the LTC render integrates the textured light\n"
+        "                   (ltc::textured_policy):\n"
+        "                     fetch        I_D I_L, one fetch into the prefiltered texture (the paper,\n"
+        "                                  sections 5.2-5.4; the default)\n"
+        "                     quick_cells  the texel-constant texture over 16 adaptive cells, each\n"
+        "                                  cell's I_D exact, its radiance the mean of its texels\n"
+        "                     exact_cells  the same with a budget of --cells cells (converges to the\n"
+        "                                  exact integral of the texel-constant texture)\n"
+        "                     all          the three, each timed and measured against the same\n"
+        "                                  reference (computed once)\n"
+        "  --cells N        exact_cells' budget: adaptive cells at most (default 64; at least 1)\n"
         "  --help           this text\n"
         "\n"
         "Floor: stripes dielectric | gold | dielectric | copper (left to right), crossed by bands of\n"
@@ -127,6 +162,20 @@ inline int parse_args(int argc, char** argv, options& o) {
         } else if (a == "--texture") {
             o.texture = value;
             o.textured = true;
+        } else if (a == "--textured-method") {
+            const std::string m = value;
+            if (m == "all")
+                o.textured_methods = {ltc::textured_method::fetch, ltc::textured_method::quick_cells,
+                                      ltc::textured_method::exact_cells};
+            else if (m == "fetch" || m == "quick_cells" || m == "exact_cells")
+                o.textured_methods = {m == "fetch"         ? ltc::textured_method::fetch
+                                      : m == "quick_cells" ? ltc::textured_method::quick_cells
+                                                           : ltc::textured_method::exact_cells};
+            else
+                return bad();
+        } else if (a == "--cells") {
+            if (!integer || v < 1 || v > 1e7) return bad();
+            o.cells = static_cast<std::size_t>(v);
         } else if (a == "--texture-radiance") {
             if (!number || !(v >= 0) || v > 1e6) return bad();
             o.texture_radiance = v;

@@ -1,8 +1,9 @@
 // render/shade_ltc.hpp -- the LTC render of one pixel (float, a renderer's path): the polygonal
 // lights with ltc::shade_polygon_light (or a row of pixels at once with
 // ltc::batch::shade_polygon_light), the textured light with ltc::shade_textured_quad_light
-// (I_D I_L: the exact polygon integral times one fetch into the prefiltered texture, paper
-// sections 5.2-5.4); specular and diffuse, Schlick's Fresnel through the table (Hill 2016).
+// (by default I_D I_L: the exact polygon integral times one fetch into the prefiltered texture,
+// paper sections 5.2-5.4; or the cells of the texel-constant texture, --textured-method);
+// specular and diffuse, Schlick's Fresnel through the table (Hill 2016).
 #pragma once
 
 #include "camera.hpp"
@@ -73,15 +74,17 @@ inline void shade_ltc_batch(const scene& s, const pixel_hit* hits, std::size_t c
     for (std::size_t j = 0; j < n; ++j) out[where[j]] = sum[j];
 }
 
-/// Radiance of one pixel from the textured light (and its emitter): LTC, I_D I_L (float).
-inline vec3 shade_ltc_textured(const scene& s, const pixel_hit& hit) {
+/// Radiance of one pixel from the textured light (and its emitter): LTC by the policy's method
+/// (float; the default policy is the paper's I_D I_L).
+inline vec3 shade_ltc_textured(const scene& s, const pixel_hit& hit, const ltc::textured_policy& policy = {}) {
     const textured_light* t = s.textured.get();
     if (t == nullptr) return vec3(0.0f);
     if (hit.kind == pixel_hit::textured_front) return t->radiance(hit.uv.x, hit.uv.y);
     if (hit.kind != pixel_hit::floor) return vec3(0.0f);
     const material& m = s.materials[static_cast<std::size_t>(hit.material)];
     const ltc::textured_light_result<float> r = ltc::shade_textured_quad_light(
-        hit.p, vec3(0, 0, 1), hit.v, m.roughness, m.f0, m.albedo, t->quad, *t->prefiltered, ltc::sidedness::one_sided);
+        hit.p, vec3(0, 0, 1), hit.v, m.roughness, m.f0, m.albedo, t->quad, *t->prefiltered, ltc::sidedness::one_sided,
+        policy);
     return r.specular + r.diffuse;
 }
 

@@ -1,8 +1,8 @@
 // render/shade_reference.hpp -- the Monte Carlo reference of one pixel (double): the same GGX BRDF
 // with Schlick's Fresnel integrated without approximation (ltc::ground_truth::integrate for the
 // polygonal lights, the diffuse term in closed form; ltc::textured_ground_truth::integrate of the
-// unfiltered texture for the textured light), with the variance of its luminance. The method is
-// described in main.cpp's file comment (reference.png).
+// texel-constant texture, textured_light::radiance, for the textured light), with the variance of
+// its luminance. The method is described in main.cpp's file comment (reference.png).
 #pragma once
 
 #include "camera.hpp"
@@ -56,7 +56,7 @@ struct reference_pixel {
 };
 
 /// The textured light's contribution to the reference (main.cpp's file comment): S + albedo D,
-/// both Monte Carlo integrals of the unfiltered texture, and the variance of the luminance of that
+/// both Monte Carlo integrals of the texel-constant texture, and the variance of the luminance of that
 /// sum. Each iteration is one call of the estimator with its own seed (so the luminance of every
 /// iteration's RGB value is known and its variance exact).
 inline void shade_reference_textured(const textured_light& t, const dvec3& P, const ltc::shading_frame<double>& frame,
