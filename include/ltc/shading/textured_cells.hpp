@@ -12,21 +12,28 @@
 // range(c) I_D(c) per channel (every I_D(t) >= 0: the cells share the light's orientation).
 //
 // Refinement (a quadtree over the pyramid): start from the one cell of the last level; while the
-// budget allows, replace the leaf with the largest bound range(c) I_D(c) by its children (four
-// polygon integrals); leaves of level 0 or of range 0 are exact and never refined. Stops when
-// the leaves would exceed budget.max_cells, or when the summed bound is at most budget.tolerance
-// times the value (largest channel). The result converges to the texel-constant integral as the
-// budget grows and equals it (to rounding) once every leaf is exact: at most width x height
-// leaves, about (4/3) width height integrals. Cost: one integral for the root and four per
-// refinement: (max_cells - 1) / 3 refinements at most.
+// budget allows, replace the leaf with the largest bound range(c) I_D(c) by its children; leaves
+// of level 0 or of range 0 are exact and never refined. Stops when the leaves would exceed
+// budget.max_cells, or when the summed bound is at most budget.tolerance times the value
+// (largest channel). The result converges to the texel-constant integral as the budget grows and
+// equals it (to rounding) once every leaf is exact: at most width x height leaves.
+//
+// Cost: the cells of the level two below the last (at most 4 x 4) are integrated first, in one
+// call of the float batch kernel (ltc/shading/batch.hpp), and the levels above take their sums
+// (I_D adds up over cells of one orientation); below that, each step refines the two leaves of
+// largest bound, integrating their up to 8 children in one call (the README's textured table
+// counts the integrals per method). Double integrates cell by cell (its default policy, exact,
+// has no SIMD kernel).
 //
 // Texture mapping: as ltc/shading/textured_light.hpp and the ground truth
 // (ltc/reference/textured_ground_truth.hpp), the texture covers the parallelogram q_0 + u (q_1 -
 // q_0) + v (q_3 - q_0), uv in [0, 1]^2 (exact for rectangles and parallelograms; corner 2 is not
 // used). The cells are that parallelogram's sub-parallelograms, with the quad's orientation.
 //
-// Robustness: finite for finite input (each integral is); a light entirely below the horizon or
-// a zero-area quad gives 0 after one integral.
+// Robustness: finite for finite input (each integral is; corners beyond a eighth of the largest
+// finite value are first scaled by 2^-4, exactly); a light entirely below the horizon or a
+// zero-area quad gives 0. A non-finite corner (an overflow upstream) gives I_D of the quad times
+// the texture's mean, as the fetch does there.
 #pragma once
 
 #include <ltc/core/clamped_cosine.hpp>
@@ -39,6 +46,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -68,15 +76,17 @@ struct cell_leaf {
     bool operator<(const cell_leaf& o) const { return bound < o.bound; }
 };
 
-/// I_D of the cells (child_k, child_i, child_j)[0..count): float through the batch kernel
-/// (ltc/shading/batch.hpp, the instruction set whose width the count fills), double one by one
-/// (its default policy, exact, has no kernel).
+/// I_D of the cells (k, i, j)[0..count), count <= 16: float through the batch kernel
+/// (ltc/shading/batch.hpp) of the widest instruction set that the count fills, double one by
+/// one (its default policy, exact, has no kernel). One call for all: a call of 8 costs about as
+/// much as one of 4 (measured), so the number of calls matters more than the number of cells.
 template <typename T, typename Corners>
 inline void cell_integrals(const transformed<clamped_cosine<T>>& d, sidedness side, const Corners& corners,
                            const int* k, const int* i, const int* j, int count, T* out, std::size_t& integrals) {
     using vec3 = glm::vec<3, T>;
+    integrals += std::size_t(count);
     if constexpr (std::is_same_v<T, float>) {
-        T x[4][8], y[4][8], z[4][8];
+        T x[4][16], y[4][16], z[4][16];
         for (int m = 0; m < count; ++m) {
             vec3 c[4];
             corners(k[m], i[m], j[m], c);
@@ -85,15 +95,15 @@ inline void cell_integrals(const transformed<clamped_cosine<T>>& d, sidedness si
         batch::quad_soa<T> soa;
         soa.m_inv = batch::matrices<T>::same_for_all(d.inverse_matrix());
         for (int v = 0; v < 4; ++v) soa.x[v] = x[v], soa.y[v] = y[v], soa.z[v] = z[v];
-        const batch::isa which = count >= 8 ? batch::isa::avx2 : batch::isa::baseline;
+        batch::isa which = batch::isa::scalar;
+        for (const batch::isa candidate : batch::instruction_sets)
+            if (batch::available(candidate) && batch::lane_count<T>(candidate) <= std::size_t(count)) which = candidate;
         batch::integrate_quads(soa, out, std::size_t(count), side, which);
-        integrals += std::size_t(count);
     } else {
         for (int m = 0; m < count; ++m) {
             vec3 c[4];
             corners(k[m], i[m], j[m], c);
             out[m] = d.integrate(c, 4, side);
-            ++integrals;
         }
     }
 }
@@ -150,7 +160,25 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     using vec3 = glm::vec<3, T>;
     using leaf = detail::cell_leaf<T>;
     cells_result<T> r;
-    const vec3 q0 = quad[0], e1 = quad[1] - quad[0], e3 = quad[3] - quad[0];
+    // Only directions matter: corners near the largest finite value are scaled by 2^-4 (exactly)
+    // so that the parallelogram's fourth corner q0 + e1 + e3 cannot overflow.
+    vec3 q[4] = {quad[0], quad[1], quad[2], quad[3]};
+    T largest(0);
+    for (const vec3& p : q) largest = std::max(largest, std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z))));
+    if (largest > std::numeric_limits<T>::max() / T(8))
+        for (vec3& p : q) p *= T(0.0625);
+    if (!(largest <= std::numeric_limits<T>::max())) {
+        // A non-finite corner (a caller's overflow, e.g. world to local): no cell geometry. Like
+        // the fetch, whose parameters are then invalid: I_D of the quad times the texture's mean.
+        const int top = cells.level_count() - 1;
+        T i_d = d.integrate(quad, 4, side);
+        if (!(i_d > T(0))) i_d = T(0);  // NaN from the non-finite corner: nothing (as the fetch)
+        r.value = vec3(double(i_d) * glm::dvec3(cells.mean(top, 0, 0)));
+        r.error_bound = cells.range(top, 0, 0) * i_d;
+        r.cells = 1, r.integrals = 1;
+        return r;
+    }
+    const vec3 q0 = q[0], e1 = q[1] - q[0], e3 = q[3] - q[0];
     const T du = T(1) / T(cells.width()), dv = T(1) / T(cells.height());
     // The quad of cell (k, i, j), corners from the texel indices (neighbours share them bit for bit).
     const auto corners = [&](int k, int i, int j, vec3 (&c)[4]) {
@@ -159,12 +187,6 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
         const T u0 = T(x0) * du, u1 = T(x1) * du, v0 = T(y0) * dv, v1 = T(y1) * dv;
         c[0] = q0 + u0 * e1 + v0 * e3, c[1] = q0 + u1 * e1 + v0 * e3;
         c[2] = q0 + u1 * e1 + v1 * e3, c[3] = q0 + u0 * e1 + v1 * e3;
-    };
-    const auto integral = [&](int k, int i, int j) {
-        vec3 c[4];
-        corners(k, i, j, c);
-        ++r.integrals;
-        return d.integrate(c, 4, side);
     };
     const auto make = [&](int k, int i, int j, T i_d) {
         const T bound = k == 0 ? T(0) : cells.range(k, i, j) * i_d;
@@ -184,18 +206,40 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
         if (l.bound > T(0)) open.push(l);
         else exact_sum += contribution(l);
     };
+    // The cells of level base = top - 2 (at most 4 x 4) in one call; the I_D of the levels above
+    // are their sums (I_D adds up over cells of one orientation), so the root and the first two
+    // refinements need no integral of their own.
+    const int base = std::max(top - 2, 0);
+    T known[3][16];  // I_D of levels base, base + 1, base + 2, cell (i, j) at [j * 4 + i]
+    {
+        int k[16], i[16], j[16], n = 0;
+        for (int b = 0; b < cells.cells_y(base); ++b)
+            for (int a = 0; a < cells.cells_x(base); ++a) k[n] = base, i[n] = a, j[n] = b, ++n;
+        T packed[16];
+        detail::cell_integrals(d, side, corners, k, i, j, n, packed, r.integrals);
+        for (int m = 0; m < n; ++m) known[0][j[m] * 4 + i[m]] = packed[m];
+        for (int l = 1; l <= top - base; ++l)
+            for (int b = 0; b < cells.cells_y(base + l); ++b)
+                for (int a = 0; a < cells.cells_x(base + l); ++a) {
+                    T sum(0);
+                    for (int y = 2 * b; y < std::min(2 * b + 2, cells.cells_y(base + l - 1)); ++y)
+                        for (int x = 2 * a; x < std::min(2 * a + 2, cells.cells_x(base + l - 1)); ++x)
+                            sum += known[l - 1][y * 4 + x];
+                    known[l][b * 4 + a] = sum;
+                }
+    }
+    // The summed bound and the value of the current leaves, kept for the tolerance only.
+    const bool tolerance = budget.tolerance > 0;
     double bound_sum = 0;
-    glm::dvec3 running(0.0);  // the value of the current leaves (for the tolerance)
-    const leaf root = make(top, 0, 0, integral(top, 0, 0));
+    glm::dvec3 running(0.0);
+    const leaf root = make(top, 0, 0, known[top - base][0]);
     add(root);
-    bound_sum += double(root.bound);
-    running += contribution(root);
+    if (tolerance) bound_sum += double(root.bound), running += contribution(root);
     std::size_t leaves = 1;
     // Each step refines the two leaves of largest bound (one if the budget allows only one), so
     // that their up to 8 children are integrated together: 8 lanes of the float batch kernel.
     while (open.size() > 0) {
-        const double value = std::max(running.x, std::max(running.y, running.z));
-        if (budget.tolerance > 0 && bound_sum <= budget.tolerance * value) break;
+        if (tolerance && bound_sum <= budget.tolerance * std::max(running.x, std::max(running.y, running.z))) break;
         leaf parent[2];
         int child_k[8], child_i[8], child_j[8], child_of[8];
         int parents = 0, children = 0;
@@ -211,23 +255,30 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
                     }
             if (n > 1 && leaves - 1 + std::size_t(n) > max_cells) break;
             const leaf popped = open.pop();
-            bound_sum -= double(popped.bound);
-            running -= contribution(popped);
+            if (tolerance) bound_sum -= double(popped.bound), running -= contribution(popped);
             leaves += std::size_t(n) - 1;
             parent[parents++] = popped;
             children += n;
         }
         if (parents == 0) break;
-        T i_d[8];
-        detail::cell_integrals(d, side, corners, child_k, child_i, child_j, children, i_d, r.integrals);
+        // Children on the base level or above are known; the others are integrated together.
+        T i_d[8], fresh[8];
+        int uk[8], ui[8], uj[8], unknown = 0;
+        for (int m = 0; m < children; ++m)
+            if (child_k[m] >= base) i_d[m] = known[child_k[m] - base][child_j[m] * 4 + child_i[m]];
+            else uk[unknown] = child_k[m], ui[unknown] = child_i[m], uj[unknown] = child_j[m], ++unknown;
+        if (unknown > 0) {
+            detail::cell_integrals(d, side, corners, uk, ui, uj, unknown, fresh, r.integrals);
+            for (int m = 0, u = 0; m < children; ++m)
+                if (child_k[m] < base) i_d[m] = fresh[u++];
+        }
         for (int m = 0; m < children; ++m) {
             // A parent with one child (the same texels): the child's integral is the parent's.
             const leaf& p = parent[child_of[m]];
             const bool only = (m == 0 || child_of[m - 1] != child_of[m]) &&
                               (m + 1 == children || child_of[m + 1] != child_of[m]);
             const leaf l = make(child_k[m], child_i[m], child_j[m], only ? p.i_d : i_d[m]);
-            bound_sum += double(l.bound);
-            running += contribution(l);
+            if (tolerance) bound_sum += double(l.bound), running += contribution(l);
             add(l);
         }
     }

@@ -188,10 +188,13 @@ inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T
             // foot point clamped into it (the paper's, restricted to the leaf); the others their
             // mean. Measured in the README: the means alone were off by up to 280% on a checker
             // under a sharp lobe, where this is off by 42% (the fetch alone: 43%).
-            const textured_fetch<T> f = fetch_parameters(d.inverse_matrix(), quad);
-            const double lod = double(tex.lod_for_sigma(f.sigma));
+            // The fetch's parameters on demand: only inexact leaves need them.
+            textured_fetch<T> f;
+            double lod = 0;
+            bool fetched = false;
             const cell_pyramid<T>& cells = tex.cells();
             const auto value = [&](int k, int i, int j) {
+                if (!fetched) f = fetch_parameters(d.inverse_matrix(), quad), lod = double(tex.lod_for_sigma(f.sigma)), fetched = true;
                 if (!f.valid || double(k) <= lod + 1) return glm::dvec3(cells.mean(k, i, j));
                 int x0, y0, x1, y1;
                 cells.texels(k, i, j, x0, y0, x1, y1);
