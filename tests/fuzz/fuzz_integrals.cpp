@@ -1,12 +1,16 @@
 // libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
 // and any matrix accepted by the checked factory, every integral, density and sample of the
-// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness; and
-// the batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
-// CPU runs) agrees with the scalar path. Build: clang++ -std=c++17 -g -O1
+// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness; the
+// batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
+// CPU runs) agrees with the scalar path; and the textured lights (fuzz_textured.hpp: tiny
+// textures, the exact cell integrals with fuzzed budgets and tolerances, textured shading with
+// every method) give finite results, non-negative for non-negative textures, with finite,
+// non-negative error bounds. Build: clang++ -std=c++17 -g -O1
 // -fsanitize=fuzzer,address,undefined -I include tests/fuzz/fuzz_integrals.cpp; run on
 // tests/fuzz/corpus (see .ci/run).
 #include "fuzz_batch.hpp"
 #include "fuzz_common.hpp"
+#include "fuzz_textured.hpp"
 
 #include <ltc/ltc.hpp>
 #include <ltc/shading/clipless.hpp>
@@ -25,7 +29,7 @@
 
 namespace {
 
-using namespace ltc_fuzz;  // fuzz_common.hpp, fuzz_batch.hpp
+using namespace ltc_fuzz;  // fuzz_common.hpp, fuzz_batch.hpp, fuzz_textured.hpp
 
 template <typename T, typename Dist>
 void check_distribution(const glm::vec<3, T>* v, std::size_t n, const glm::mat<3, 3, T>& m, bool use_inverse,
@@ -92,6 +96,7 @@ void run(FuzzedDataProvider& in) {
     check_distribution<T, ltc::squared_clamped_cosine<T>>(pv, n, m, use_inverse, u);
 
     check_batch<T>(in, m, v);
+    check_textured<T>(in, m, v, P, N, V, roughness);
 }
 
 }  // namespace
