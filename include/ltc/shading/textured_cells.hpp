@@ -212,7 +212,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     const int base = std::max(top - 2, 0);
     T known[3][16];  // I_D of levels base, base + 1, base + 2, cell (i, j) at [j * 4 + i]
     {
-        int k[16], i[16], j[16], n = 0;
+        int k[16] = {}, i[16] = {}, j[16] = {}, n = 0;
         for (int b = 0; b < cells.cells_y(base); ++b)
             for (int a = 0; a < cells.cells_x(base); ++a) k[n] = base, i[n] = a, j[n] = b, ++n;
         T packed[16];
@@ -241,7 +241,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     while (open.size() > 0) {
         if (tolerance && bound_sum <= budget.tolerance * std::max(running.x, std::max(running.y, running.z))) break;
         leaf parent[2];
-        int child_k[8], child_i[8], child_j[8], child_of[8];
+        int child_k[8] = {}, child_i[8] = {}, child_j[8] = {}, child_of[8] = {};
         int parents = 0, children = 0;
         while (parents < 2 && open.size() > 0) {
             const leaf& c = open.top();
@@ -263,7 +263,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
         if (parents == 0) break;
         // Children on the base level or above are known; the others are integrated together.
         T i_d[8], fresh[8];
-        int uk[8], ui[8], uj[8], unknown = 0;
+        int uk[8] = {}, ui[8] = {}, uj[8] = {}, unknown = 0;
         for (int m = 0; m < children; ++m)
             if (child_k[m] >= base) i_d[m] = known[child_k[m] - base][child_j[m] * 4 + child_i[m]];
             else uk[unknown] = child_k[m], ui[unknown] = child_i[m], uj[unknown] = child_j[m], ++unknown;
