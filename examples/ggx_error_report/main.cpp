@@ -43,12 +43,12 @@
 //
 // Source files (examples/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
 // LTC estimate with each method), statistics.hpp (relative errors and their summaries),
-// parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
+// common/parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
 // horizon.cpp, clipless.cpp, fit_sizes.cpp), and this file: the command line, the ground truth,
 // the first section and the list of every configuration.
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
-#include "parallel_for.hpp"
+#include "common/parallel_for.hpp"
 #include "report.hpp"
 #include "statistics.hpp"
 
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     opt.target_relative_error = target;
     opt.max_samples = 1u << 22;
     const auto t_gt = std::chrono::steady_clock::now();
-    parallel_for(grid.size(), threads, [&](std::size_t i) {
+    ltc_examples::parallel_for(grid.size(), threads, [&](std::size_t i) {
         config& c = grid[i];
         const double theta = thetas[c.theta] * deg;
         const dvec3 V(std::sin(theta), 0, std::cos(theta));

@@ -58,9 +58,10 @@
 //
 // Source files (examples/textured_error_report/): setup.hpp (textures, MC densities, the grid,
 // seeds), evaluate.hpp (one configuration: methods and MC), statistics.hpp (the errors and their
-// summaries), report.hpp / report.cpp (sections 1-5), parallel_for.hpp, and this file.
+// summaries), report.hpp / report.cpp (sections 1-5), and this file; worker threads from
+// examples/common/parallel_for.hpp.
 #include "evaluate.hpp"
-#include "parallel_for.hpp"
+#include "common/parallel_for.hpp"
 #include "report.hpp"
 #include "setup.hpp"
 
@@ -100,7 +101,7 @@ int main(int argc, char** argv) {
     }
     const std::vector<config> grid = make_grid();
     std::vector<config_result> res(grid.size());
-    parallel_for(grid.size(), threads, [&](std::size_t i) { res[i] = evaluate(grid[i], i, in); });
+    ltc_examples::parallel_for(grid.size(), threads, [&](std::size_t i) { res[i] = evaluate(grid[i], i, in); });
     const double eval_seconds = seconds_since(t_start);
 
     const std::size_t significant = std::size_t(std::count_if(res.begin(), res.end(), [](const config_result& r) {

@@ -1,5 +1,5 @@
-// textured_error_report/parallel_for.hpp -- f(i) for i in [0, n) on worker threads (indices handed
-// out in order).
+// examples/common/parallel_for.hpp -- f(i) for i in [0, n) on worker threads (indices handed out
+// in order), shared by the error reports (ggx_error_report, textured_error_report).
 #pragma once
 
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace textured_error_report {
+namespace ltc_examples {
 
 template <typename F>
 void parallel_for(std::size_t n, unsigned threads, F&& f) {
@@ -20,4 +20,4 @@ void parallel_for(std::size_t n, unsigned threads, F&& f) {
     for (auto& t : pool) t.join();
 }
 
-}  // namespace textured_error_report
+}  // namespace ltc_examples
