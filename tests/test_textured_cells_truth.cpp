@@ -156,8 +156,8 @@ TEMPLATE_TEST_CASE("the error bound is rigorous, non-increasing in the budget, a
                 const auto full = ltc::integrate_textured_cells(d, q, cells, side, {std::size_t(w * h), 0});
                 // textured_cells.hpp: with the exact integrals I_c of the exact cells,
                 // |sum_leaves mean_c I_c - sum_t L_t I_t| <= sum_leaves range_c I_c. The library's
-                // I_c are within cell_bound e_c of them, so its value, the full value and its bound
-                // each move by <= pyramid_bound (sum_c max_c e_c): 3 of it, plus the double sums
+                // I_c are within cell_bound e_c of them (or sums of level top - 2's), so its value,
+                // the full value and its bound each move by <= pyramid_bound: 3 of it, plus the sums
                 // (<= 2 n u_d of the value, n < 2 w h terms) and the roundings to T (u_T each).
                 const double slack = 3 * pyramid_bound<T>(lobe_m_inv(lo), qd, img, w, h);
                 double prev = INFINITY;
@@ -273,15 +273,15 @@ TEST_CASE("full refinement against Monte Carlo of the texel-constant texture", "
                 const auto side = ltc::sidedness::two_sided;
                 const auto rd = ltc::integrate_textured_cells(lobe<double>(lo), qd, cells_d, side, {n, 0});
                 const auto rf = ltc::integrate_textured_cells(lobe<float>(lo), qf, cells_f, side, {n, 0});
-                // Each result's rounding: pyramid_bound (the library's I_D of its leaves against
-                // the exact cells'), the double sum of n terms (2 n u_d) and the rounding to T.
-                // These first-order worst cases come to 3e-3 to 1e-1 of the value in float (the
-                // sharp lobe's M^-1 amplifies vertex errors) and 1e-10 in double; the measured
-                // float - double difference is <= 2e-6 of it, far below 4 standard errors (1e-2).
-                const double pf = pyramid_bound<float>(lobe_m_inv(lo), qd, img, w, h);
-                const glm::dvec3 slack_f = pf + (unit_roundoff<float>() + 2 * n * u_d) * rd.value;
+                // Each result's rounding: full_refinement_bound (its leaves' I_D against the exact
+                // cells'), the double sum of n terms (2 n u_d) and the rounding to T. These first-
+                // order worst cases come to 1e-3 to 7e-2 of the value in float (the sharp lobe's
+                // M^-1 amplifies vertex errors) and 1e-10 in double; the measured float - double
+                // difference is <= 2e-6 of it, far below 4 standard errors (1e-2).
+                const double bf = full_refinement_bound<float>(lobe_m_inv(lo), qd, cells_d);
+                const glm::dvec3 slack_f = bf + (unit_roundoff<float>() + 2 * n * u_d) * rd.value;
                 const glm::dvec3 slack_d =
-                    pyramid_bound<double>(lobe_m_inv(lo), qd, img, w, h) + 2 * n * u_d * rd.value;
+                    full_refinement_bound<double>(lobe_m_inv(lo), qd, cells_d) + 2 * n * u_d * rd.value;
                 CAPTURE(int(p), lights[li].name, lobe_names[lo], e.mean.y, e.standard_error.y, rd.value.y, rf.value.y);
                 for (int k = 0; k < 3; ++k) {
                     // Unbiased MC, fixed seeds: 4 standard errors (a false failure ~6e-5 per check

@@ -232,4 +232,38 @@ double pyramid_bound(const dmat3& m_inv, const dvec3 quad[4], const std::vector<
     return sum + l_max * (base + 15 * unit_roundoff<T>() * i_d);
 }
 
+/// How far the value at full refinement moves by the rounding of its leaves' I_D: the leaves are
+/// the cells of range 0 (or of level 0) whose ancestors all have range > 0; each weighs
+/// max(mean_c) times its cell_bound, or, above level top - 2 (whose I_D the library may sum
+/// from that level's), times the cell_bounds of the level top - 2 cells inside it + 15 u_T I_D.
+template <typename T>
+double full_refinement_bound(const dmat3& m_inv, const dvec3 quad[4], const ltc::cell_pyramid<double>& cells) {
+    const int top = cells.level_count() - 1, base = std::max(top - 2, 0), w = cells.width(), h = cells.height();
+    const auto bound = [&](int k, int i, int j) {
+        int x0, y0, x1, y1;
+        cells.texels(k, i, j, x0, y0, x1, y1);
+        double e = cell_bound<T>(m_inv, quad, w, h, x0, y0, x1, y1);
+        if (k <= base) return e;
+        e += 15 * unit_roundoff<T>() * exact_cell_integral(m_inv, quad, w, h, x0, y0, x1, y1);
+        const int s = 1 << base;
+        for (int y = y0; y < y1; y += s)
+            for (int x = x0; x < x1; x += s)
+                e += cell_bound<T>(m_inv, quad, w, h, x, y, std::min(x + s, x1), std::min(y + s, y1));
+        return e;
+    };
+    double sum = 0;
+    const auto visit = [&](const auto& self, int k, int i, int j) -> void {
+        if (k == 0 || cells.range(k, i, j) == 0) {
+            sum += max_component(cells.mean(k, i, j)) * bound(k, i, j);
+            return;
+        }
+        for (int b = 0; b < 2; ++b)
+            for (int a = 0; a < 2; ++a)
+                if (2 * i + a < cells.cells_x(k - 1) && 2 * j + b < cells.cells_y(k - 1))
+                    self(self, k - 1, 2 * i + a, 2 * j + b);
+    };
+    visit(visit, top, 0, 0);
+    return sum;
+}
+
 }  // namespace ltc_test::textured_cells
