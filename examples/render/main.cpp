@@ -126,24 +126,28 @@
 // Source files (examples/render/): options.hpp (the command line), scene.hpp (floor, materials,
 // camera placement) and lights.hpp (the lights), image.hpp (texture files in, PNGs out, through
 // stb.hpp / stb.cpp) and stained_glass.hpp (the default picture), camera.hpp (what each pixel
-// sees), shade_ltc.hpp and shade_reference.hpp (the two renders), colour.hpp (luminance, tone
-// mapping, false colour), error_stats.hpp (the statistics), threads.hpp (rows on worker threads,
-// progress bar), and this file: the top-level flow.
+// sees), shade_ltc.hpp and shade_reference.hpp (the two renders; one pixel), ltc_timing.hpp (the
+// timed LTC render of the polygonal lights), textured_methods.hpp (the textured light by each
+// method), reference_render.hpp (the timed reference render), colour.hpp (luminance, tone
+// mapping, false colour), error_stats.hpp (the statistics) and report.hpp (the error images and
+// printed statistics), threads.hpp (rows on worker threads, progress bar), and this file: the
+// top-level flow.
 #include "camera.hpp"
 #include "colour.hpp"
 #include "error_stats.hpp"
 #include "image.hpp"
 #include "lights.hpp"
+#include "ltc_timing.hpp"
 #include "math.hpp"
 #include "options.hpp"
+#include "reference_render.hpp"
+#include "report.hpp"
 #include "scene.hpp"
-#include "shade_ltc.hpp"
-#include "shade_reference.hpp"
 #include "stained_glass.hpp"
+#include "textured_methods.hpp"
 #include "threads.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -156,64 +160,6 @@
 #include <vector>
 
 using namespace render;  // the pieces above
-
-namespace {
-
-/// The textured light's LTC render by one method (--textured-method).
-struct textured_run {
-    ltc::textured_policy policy;
-    std::string label;  // "fetch", "quick_cells (16 cells)", "exact_cells (N cells)"
-    std::vector<dvec3> ltc;  // its contribution (and its emitter)
-    double seconds = INFINITY;  // best of 5
-};
-
-/// --textured-method all: the textured light's statistics of every method side by side (the same
-/// reference and floor pixels for all): LTC time and error of luminance, then the per-tile means.
-void print_comparison(const scene& s, const std::vector<textured_run>& runs, const std::vector<error_stats>& st,
-                      std::size_t floor_pixels, unsigned threads) {
-    std::printf("\n=== the textured light alone, the methods side by side (the same reference, the same %zu floor "
-                "pixels) ===\n",
-                st[0].rel.size());
-    std::printf("  %-24s %10s %9s   |relative error|: %6s %7s %7s %7s   %7s %8s\n", "method", "LTC time", "ns/pixel",
-                "mean", "median", "p95", "max", "signed", ">3 s.e.");
-    for (std::size_t k = 0; k < runs.size(); ++k) {
-        const error_stats& e = st[k];
-        std::printf("  %-24s %8.4f s %9.0f   %16s %5.2f%% %6.2f%% %6.2f%% %6.1f%%   %+6.2f%% %7.1f%%\n",
-                    runs[k].label.c_str(), runs[k].seconds,
-                    runs[k].seconds * 1e9 * threads / static_cast<double>(floor_pixels), "", 100 * mean_of(e.rel),
-                    100 * percentile(e.rel, 0.5), 100 * percentile(e.rel, 0.95), 100 * percentile(e.rel, 1.0),
-                    100 * mean_of(e.signed_rel),
-                    e.rel.empty() ? 0.0 : 100.0 * static_cast<double>(e.significant) / static_cast<double>(e.rel.size()));
-    }
-    std::printf("  (LTC time: best of 5, %u thread%s; ns/pixel: of one thread per floor pixel; signed: mean signed\n"
-                "  relative error; >3 s.e.: pixels where |Y_ltc - Y_ref| > 3 standard errors of the reference)\n",
-                threads, threads == 1 ? "" : "s");
-    std::printf("\nper tile, mean |relative error| in %%,");
-    for (std::size_t k = 0; k < runs.size(); ++k)
-        std::printf("%s%s", k ? " / " : " ", method_name(runs[k].policy.method));
-    std::printf("; bands far to near, stripes left to right:\n  roughness");
-    for (const char* name : s.column_names) std::printf(" %20s", name);
-    std::printf("\n");
-    for (int b = scene::bands - 1; b >= 0; --b) {
-        std::printf("  %9.2f", static_cast<double>(s.roughness[b]));
-        for (int c = 0; c < scene::columns; ++c) {
-            const std::size_t m = static_cast<std::size_t>(b * scene::columns + c);
-            std::string cell;
-            for (std::size_t k = 0; k < runs.size(); ++k) {
-                char v[24];
-                if (st[k].tile_rel[m].empty())
-                    std::snprintf(v, sizeof v, "-");
-                else
-                    std::snprintf(v, sizeof v, "%.1f", 100 * mean_of(st[k].tile_rel[m]));
-                cell += (k ? " / " : "") + std::string(v);
-            }
-            std::printf(" %20s", cell.c_str());
-        }
-        std::printf("\n");
-    }
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     options opt;
@@ -266,100 +212,17 @@ int main(int argc, char** argv) {
     // The textured light's LTC render by each method of --textured-method (one, or all three
     // with "all"); the first one's is the textured light of ltc.png, error.png and
     // textured_error.png (fetch's with "all").
-    std::vector<textured_run> runs;
-    for (std::size_t k = 0; tex && k < opt.textured_methods.size(); ++k) {
-        textured_run r;
-        r.policy.method = opt.textured_methods[k];
-        r.policy.budget.max_cells = opt.cells;
-        r.label = method_name(r.policy.method);
-        if (r.policy.method != ltc::textured_method::fetch)
-            r.label += " (" +
-                       std::to_string(r.policy.method == ltc::textured_method::quick_cells
-                                          ? ltc::textured_policy::quick_cells_budget
-                                          : opt.cells) +
-                       " cells)";
-        r.ltc.assign(count, dvec3(0.0));
-        runs.push_back(std::move(r));
-    }
+    std::vector<textured_run> runs = make_textured_runs(opt, tex != nullptr, count);
     const bool compare = runs.size() > 1;  // --textured-method all
-    // " by quick_cells (16 cells)" after "textured light" where the method is named: with all, or
-    // with one method other than the default fetch (the default run's lines are left as they were).
-    const std::string method_note =
-        !runs.empty() && (compare || runs[0].policy.method != ltc::textured_method::fetch) ? " by " + runs[0].label
-                                                                                            : "";
+    const std::string note = method_note(runs);
 
     // LTC render: each part timed as the best of 5 runs (it takes milliseconds).
-    std::vector<dvec3> ltc_poly(count), ltc_img(count);
-    double ltc_seconds = INFINITY;
-    for (int run = 0; run < 5; ++run) {
-        const auto t0 = clock_type::now();
-        for_each_row(H, opt.threads, [&](int y) {
-            for (int x = 0; x < W; ++x) {
-                const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                ltc_poly[i] = dvec3(shade_ltc(s, hits[i]));
-            }
-        });
-        ltc_seconds = std::min(ltc_seconds, seconds_since(t0));
-    }
-    // The same polygonal lights a row of pixels at a time through the batch API (SIMD lanes).
-    std::vector<dvec3> ltc_batch(count);
-    double batch_seconds = INFINITY;
-    for (int run = 0; run < 5; ++run) {
-        const auto t0 = clock_type::now();
-        for_each_row(H, opt.threads, [&](int y) {
-            const std::size_t row = static_cast<std::size_t>(y) * W;
-            std::vector<vec3> px(static_cast<std::size_t>(W));
-            shade_ltc_batch(s, hits.data() + row, px.size(), px.data());
-            for (int x = 0; x < W; ++x) ltc_batch[row + x] = dvec3(px[static_cast<std::size_t>(x)]);
-        });
-        batch_seconds = std::min(batch_seconds, seconds_since(t0));
-    }
-    double batch_diff = 0, peak = 0;
-    for (std::size_t i = 0; i < count; ++i)
-        for (int c = 0; c < 3; ++c) {
-            batch_diff = std::max(batch_diff, std::abs(ltc_batch[i][c] - ltc_poly[i][c]));
-            if (hits[i].kind == pixel_hit::floor) peak = std::max(peak, ltc_poly[i][c]);
-        }
-    for (textured_run& r : runs)
-        for (int run = 0; run < 5; ++run) {
-            const auto t0 = clock_type::now();
-            for_each_row(H, opt.threads, [&](int y) {
-                for (int x = 0; x < W; ++x) {
-                    const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                    r.ltc[i] = dvec3(shade_ltc_textured(s, hits[i], r.policy));
-                }
-            });
-            r.seconds = std::min(r.seconds, seconds_since(t0));
-        }
-    const double ltc_tex_seconds = runs.empty() ? 0.0 : runs[0].seconds;
-    const auto ns_per_floor_pixel = [&](double seconds) {
-        return seconds * 1e9 * opt.threads / static_cast<double>(floor_pixels);
-    };
-    if (!tex) {
-        std::printf("LTC render:       %9.4f s  (best of 5; %.0f ns of one thread per floor pixel and light)\n",
-                    ltc_seconds,
-                    ltc_seconds * 1e9 * opt.threads / (static_cast<double>(floor_pixels) * s.lights.size()));
-    } else {
-        std::printf("LTC render:       %9.4f s  (best of 5 of each part: polygonal lights %.4f s, %.0f ns of one "
-                    "thread per floor pixel and light;\n"
-                    "                                textured light%s %.4f s, %.0f ns per floor pixel)\n",
-                    ltc_seconds + ltc_tex_seconds, ltc_seconds,
-                    ltc_seconds * 1e9 * opt.threads / (static_cast<double>(floor_pixels) * s.lights.size()),
-                    method_note.c_str(), ltc_tex_seconds, ns_per_floor_pixel(ltc_tex_seconds));
-    }
+    ltc_timing lt = render_ltc_polygons(s, hits, W, H, opt.threads);
+    std::vector<dvec3>& ltc_poly = lt.poly;
+    render_textured_runs(s, hits, W, H, opt.threads, runs);
+    print_ltc_times(s, lt, runs, note, floor_pixels, opt.threads);
 
-    std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light: %.1fx as "
-                "fast;\n                                largest difference to the point-by-point render %.1e, floor "
-                "values up to %.2f)\n",
-                batch_seconds, ltc_seconds / batch_seconds, batch_diff, peak);
-    if (compare) {
-        std::printf("LTC render, the textured light by each method (best of 5 each; ltc_<method>.png):\n");
-        for (const textured_run& r : runs)
-            std::printf("  %-24s %9.4f s  %7.0f ns of one thread per floor pixel  %6.1fx the time of fetch\n",
-                        r.label.c_str(), r.seconds, ns_per_floor_pixel(r.seconds), r.seconds / runs[0].seconds);
-    }
-
-    std::size_t ltc_nonfinite = 0, ref_nonfinite = 0;
+    std::size_t ltc_nonfinite = 0;
     for (std::size_t i = 0; i < count; ++i) {
         if (!finite3(ltc_poly[i])) ++ltc_nonfinite, ltc_poly[i] = dvec3(0.0);
         for (textured_run& r : runs)
@@ -367,6 +230,7 @@ int main(int argc, char** argv) {
     }
     const std::vector<dvec3> no_textured_light(runs.empty() ? count : 0, dvec3(0.0));
     const std::vector<dvec3>& ltc_tex = runs.empty() ? no_textured_light : runs[0].ltc;
+    std::vector<dvec3> ltc_img(count);
     for (std::size_t i = 0; i < count; ++i) ltc_img[i] = ltc_poly[i] + ltc_tex[i];
 
     std::vector<std::uint8_t> rgb(count * 3);
@@ -383,91 +247,13 @@ int main(int argc, char** argv) {
     }
 
     // Reference render.
-    std::fflush(stdout);  // the progress bar goes to stderr
-    std::vector<reference_pixel> ref(count);
-    const auto t0 = clock_type::now();
-    std::vector<long long> row_cost(static_cast<std::size_t>(H), 0);  // floor pixels per row
-    for (std::size_t i = 0; i < count; ++i)
-        row_cost[i / static_cast<std::size_t>(W)] += hits[i].kind == pixel_hit::floor;
-    for_each_row(
-        H, opt.threads,
-        [&](int y) {
-            for (int x = 0; x < W; ++x) {
-                const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                ref[i] = shade_reference(s, hits[i], mix_seed(opt.seed, i), opt.spp);
-            }
-        },
-        "reference", &row_cost);
-    const double ref_seconds = seconds_since(t0);
-    if (!tex)
-        std::printf("reference render: %9.4f s  (%d iterations x 2 directions x 2 integrals per pixel and light, "
-                    "%u threads)\n",
-                    ref_seconds, opt.spp, opt.threads);
-    else
-        std::printf("reference render: %9.4f s  (%d iterations x 2 directions x 2 integrals per pixel and polygonal "
-                    "light,\n"
-                    "                                x 1 or 2 integrals (specular; diffuse where albedo > 0) for the "
-                    "textured light, %u threads)\n",
-                    ref_seconds, opt.spp, opt.threads);
-    std::printf("reference / LTC:  %9.0f x\n", ref_seconds / (ltc_seconds + ltc_tex_seconds));
-
-    std::vector<dvec3> ref_poly(count), ref_tex(count), ref_img(count);
-    std::vector<double> var_poly(count), var_tex(count), var_all(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        reference_pixel& p = ref[i];
-        if (!finite3(p.radiance) || !std::isfinite(p.luminance_variance))
-            ++ref_nonfinite, p.radiance = dvec3(0.0), p.luminance_variance = 0;
-        if (!finite3(p.textured) || !std::isfinite(p.textured_variance))
-            ++ref_nonfinite, p.textured = dvec3(0.0), p.textured_variance = 0;
-        ref_poly[i] = p.radiance;
-        ref_tex[i] = p.textured;
-        ref_img[i] = p.radiance + p.textured;
-        var_poly[i] = p.luminance_variance;
-        var_tex[i] = p.textured_variance;
-        var_all[i] = p.luminance_variance + p.textured_variance;  // independent seeds
-    }
-    for (std::size_t i = 0; i < count; ++i) tone_map(ref_img[i], opt.exposure, &rgb[3 * i]);
+    const reference_render ref = render_reference(s, hits, W, H, opt);
+    print_reference_time(s, ref, opt, lt.seconds + textured_seconds(runs));
+    for (std::size_t i = 0; i < count; ++i) tone_map(ref.img[i], opt.exposure, &rgb[3 * i]);
     ok = write_png(out_dir / "reference.png", W, H, rgb) && ok;
 
     // Error images and statistics.
-    const double floor = dark_floor / opt.exposure;
-    const error_stats all = measure_error(hits, ltc_img, ref_img, var_all, floor, rgb);
-    ok = write_png(out_dir / "error.png", W, H, rgb) && ok;
-    if (!tex) {
-        std::printf("\n");
-        print_error(s, all, floor);
-    } else {
-        // The textured light alone, by each method, against the one reference.
-        std::vector<error_stats> tex_stats;
-        for (const textured_run& r : runs) {
-            tex_stats.push_back(measure_error(hits, r.ltc, ref_tex, var_tex, floor, rgb));
-            if (tex_stats.size() == 1) ok = write_png(out_dir / "textured_error.png", W, H, rgb) && ok;
-            if (compare)
-                ok = write_png(out_dir / ("textured_error_" + std::string(method_name(r.policy.method)) + ".png"), W,
-                               H, rgb) &&
-                     ok;
-        }
-        const error_stats poly_stats = measure_error(hits, ltc_poly, ref_poly, var_poly, floor, rgb);
-        std::printf("\n=== all lights (ltc.png, reference.png, error.png%s%s) ===\n",
-                    method_note.empty() ? "" : "; the textured light", method_note.c_str());
-        print_error(s, all, floor);
-        std::printf("\n=== the polygonal lights alone (rectangle + pentagon: the statistics of --no-texture) ===\n");
-        print_error(s, poly_stats, floor);
-        if (!compare) {
-            std::printf("\n=== the textured light alone%s (its contribution to the floor: textured_error.png) ===\n",
-                        method_note.c_str());
-            print_error(s, tex_stats[0], floor, "Y_ref,tex");
-        } else {
-            for (std::size_t k = 0; k < runs.size(); ++k) {
-                const char* name = method_name(runs[k].policy.method);
-                std::printf("\n=== the textured light alone by %s (its contribution to the floor: textured_error_%s.png%s) "
-                            "===\n",
-                            runs[k].label.c_str(), name, k == 0 ? ", = textured_error.png" : "");
-                print_error(s, tex_stats[k], floor, "Y_ref,tex");
-            }
-            print_comparison(s, runs, tex_stats, floor_pixels, opt.threads);
-        }
-    }
-    std::printf("non-finite values: LTC %zu, reference %zu\n", ltc_nonfinite, ref_nonfinite);
-    return ok && ltc_nonfinite == 0 && ref_nonfinite == 0 ? 0 : 1;
+    ok = report_errors(s, hits, ltc_poly, ltc_img, runs, ref, note, floor_pixels, opt, out_dir, rgb) && ok;
+    std::printf("non-finite values: LTC %zu, reference %zu\n", ltc_nonfinite, ref.nonfinite);
+    return ok && ltc_nonfinite == 0 && ref.nonfinite == 0 ? 0 : 1;
 }
