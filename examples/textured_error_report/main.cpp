@@ -40,9 +40,9 @@
 //      standard error (mean |z| and max |z|; a correct MC gives about 0.8 and a max near 3.5);
 //      how far the checker's exact integral lies from its mean times I_D (the checker is
 //      shifted by 2 texels: every light and lobe here is symmetric under u -> 1 - u, which
-//      would swap an unshifted checker's two colours and make the mean exact); and the MC of the bilinear texture (bilinear_image_lookup,
-//      same seed and density: common random numbers) against the texel-constant truth, what the
-//      choice of reconstruction changes.
+//      would swap an unshifted checker's two colours and make the mean exact); and the MC of
+//      the bilinear texture (bilinear_image_lookup, same seed and density: common random
+//      numbers) against the texel-constant truth, what the choice of reconstruction changes.
 //   2. per method and texture: texture error |sum_rgb(approx) - MC| / MC, mean / p95 / max and
 //      bias (mean signed error); shading error |magnitude sum_rgb(approx) - MC'| / MC' with MC'
 //      the MC of int L rho cos (GGX BRDF lobe, same texture; for the diffuse lobe MC' = MC and
