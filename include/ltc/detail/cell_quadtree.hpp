@@ -68,26 +68,23 @@ class open_leaves {
         data_[count_++] = l;
         if (heap_) std::push_heap(data_, data_ + count_);
     }
-    /// Removes and returns the leaf of largest bound.
-    cell_leaf<T> pop() {
+    /// The index of the leaf of largest bound (0 in a heap).
+    std::size_t best() const {
+        std::size_t at = 0;
+        if (!heap_)
+            for (std::size_t m = 1; m < count_; ++m)
+                if (data_[at].bound < data_[m].bound) at = m;
+        return at;
+    }
+    /// Removes and returns the leaf at best().
+    cell_leaf<T> take(std::size_t at) {
         if (heap_) {
             std::pop_heap(data_, data_ + count_);
             return data_[--count_];
         }
-        std::size_t best = 0;
-        for (std::size_t m = 1; m < count_; ++m)
-            if (data_[best].bound < data_[m].bound) best = m;
-        const cell_leaf<T> l = data_[best];
-        data_[best] = data_[--count_];
+        const cell_leaf<T> l = data_[at];
+        data_[at] = data_[--count_];
         return l;
-    }
-    /// The leaf pop() would return.
-    const cell_leaf<T>& top() const {
-        if (heap_) return data_[0];
-        std::size_t best = 0;
-        for (std::size_t m = 1; m < count_; ++m)
-            if (data_[best].bound < data_[m].bound) best = m;
-        return data_[best];
     }
 
   private:

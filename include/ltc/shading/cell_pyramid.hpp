@@ -18,8 +18,8 @@
 // ltc/shading/textured_cells.hpp refines the cell with the largest such bound.
 //
 // Storage: sum_k cells(k) (3 + 1) T, about (4/3) width height 16 bytes in float (22 MB for
-// 1024 x 1024); built in O(width height) (each level from the one below, means accumulated in
-// double from the texels' sums and counts).
+// 1024 x 1024); built in O(width height), each level from the one below (sums, extremes and
+// counts in double, kept for the level below only).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -45,31 +45,25 @@ class cell_pyramid {
             throw std::invalid_argument("ltc::cell_pyramid: empty image");
         level base;
         base.nx = width, base.ny = height;
-        base.sum.resize(std::size_t(width) * height);
-        base.lo.resize(base.sum.size());
-        base.hi.resize(base.sum.size());
-        base.count.assign(base.sum.size(), 1.0);
-        for (std::size_t t = 0; t < base.sum.size(); ++t) {
-            const glm::dvec3 c(linear_rgb[t]);
-            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
+        base.mean.assign(linear_rgb, linear_rgb + std::size_t(width) * std::size_t(height));
+        base.range.assign(base.mean.size(), T(0));
+        for (const vec3& t : base.mean)
+            if (!std::isfinite(double(t.x)) || !std::isfinite(double(t.y)) || !std::isfinite(double(t.z)))
                 throw std::invalid_argument("ltc::cell_pyramid: non-finite texel");
-            base.sum[t] = base.lo[t] = base.hi[t] = c;
-        }
         levels_.push_back(std::move(base));
-        while (levels_.back().nx > 1 || levels_.back().ny > 1) levels_.push_back(coarser(levels_.back()));
-        for (level& l : levels_) {
-            l.mean.resize(l.sum.size());
-            l.range.resize(l.sum.size());
-            for (std::size_t c = 0; c < l.sum.size(); ++c) {
-                l.mean[c] = vec3(l.sum[c] / l.count[c]);
-                const glm::dvec3 r = l.hi[c] - l.lo[c];
-                l.range[c] = T(std::max(r.x, std::max(r.y, r.z)));
-            }
-            // Only the means and ranges are kept.
-            std::vector<glm::dvec3>().swap(l.sum);
-            std::vector<glm::dvec3>().swap(l.lo);
-            std::vector<glm::dvec3>().swap(l.hi);
-            std::vector<double>().swap(l.count);
+        // Sums, extremes and counts (in double) of the level below only, each level built from
+        // the one below: level 1 from the texels themselves.
+        if (width == 1 && height == 1) return;
+        const auto t = [&](std::size_t s) { return glm::dvec3(linear_rgb[s]); };
+        partial below = coarser(width, height, t, t, t, [](std::size_t) { return 1.0; });
+        finish(below);
+        while (below.nx > 1 || below.ny > 1) {
+            partial next = coarser(
+                below.nx, below.ny, [&](std::size_t s) { return below.sum[s]; },
+                [&](std::size_t s) { return below.lo[s]; }, [&](std::size_t s) { return below.hi[s]; },
+                [&](std::size_t s) { return below.count[s]; });
+            finish(next);
+            below = std::move(next);
         }
     }
 
@@ -93,31 +87,51 @@ class cell_pyramid {
   private:
     struct level {
         int nx = 0, ny = 0;
-        std::vector<glm::dvec3> sum, lo, hi;  // during construction only
-        std::vector<double> count;
         std::vector<vec3> mean;
         std::vector<T> range;
+    };
+    // A level under construction.
+    struct partial {
+        int nx = 0, ny = 0;
+        std::vector<glm::dvec3> sum, lo, hi;
+        std::vector<double> count;
     };
 
     std::size_t index(int k, int i, int j) const { return std::size_t(j) * levels_[std::size_t(k)].nx + std::size_t(i); }
 
-    static level coarser(const level& f) {
-        level c;
-        c.nx = (f.nx + 1) / 2, c.ny = (f.ny + 1) / 2;
+    /// The level above a nx x ny level whose cell s has the given sum, extremes and count.
+    template <typename Sum, typename Lo, typename Hi, typename Count>
+    static partial coarser(int nx, int ny, const Sum& sum, const Lo& lo, const Hi& hi, const Count& count) {
+        partial c;
+        c.nx = (nx + 1) / 2, c.ny = (ny + 1) / 2;
         const std::size_t n = std::size_t(c.nx) * c.ny;
         c.sum.assign(n, glm::dvec3(0.0));
         c.count.assign(n, 0.0);
         c.lo.assign(n, glm::dvec3(INFINITY));
         c.hi.assign(n, glm::dvec3(-INFINITY));
-        for (int y = 0; y < f.ny; ++y)
-            for (int x = 0; x < f.nx; ++x) {
-                const std::size_t s = std::size_t(y) * f.nx + x, d = std::size_t(y / 2) * c.nx + x / 2;
-                c.sum[d] += f.sum[s];
-                c.count[d] += f.count[s];
-                c.lo[d] = glm::min(c.lo[d], f.lo[s]);
-                c.hi[d] = glm::max(c.hi[d], f.hi[s]);
+        for (int y = 0; y < ny; ++y)
+            for (int x = 0; x < nx; ++x) {
+                const std::size_t s = std::size_t(y) * nx + x, d = std::size_t(y / 2) * c.nx + x / 2;
+                c.sum[d] += sum(s);
+                c.count[d] += count(s);
+                c.lo[d] = glm::min(c.lo[d], lo(s));
+                c.hi[d] = glm::max(c.hi[d], hi(s));
             }
         return c;
+    }
+
+    /// The means and ranges of a finished level.
+    void finish(const partial& p) {
+        level l;
+        l.nx = p.nx, l.ny = p.ny;
+        l.mean.resize(p.sum.size());
+        l.range.resize(p.sum.size());
+        for (std::size_t c = 0; c < p.sum.size(); ++c) {
+            l.mean[c] = vec3(p.sum[c] / p.count[c]);
+            const glm::dvec3 r = p.hi[c] - p.lo[c];
+            l.range[c] = T(std::max(r.x, std::max(r.y, r.z)));
+        }
+        levels_.push_back(std::move(l));
     }
 
     int width_, height_;

@@ -39,7 +39,6 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
-#include <ltc/shading/batch.hpp>
 #include <ltc/shading/cell_pyramid.hpp>
 #include <ltc/detail/cell_quadtree.hpp>
 
@@ -48,7 +47,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 #include <vector>
 
 namespace ltc {
@@ -162,7 +160,8 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
         int child_k[8] = {}, child_i[8] = {}, child_j[8] = {}, child_of[8] = {};
         int parents = 0, children = 0;
         while (parents < 2 && open.size() > 0) {
-            const leaf& c = open.top();
+            const std::size_t at = open.best();
+            const leaf& c = open[at];
             int n = 0;
             for (int b = 0; b < 2; ++b)
                 for (int a = 0; a < 2; ++a)
@@ -172,30 +171,37 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
                         ++n;
                     }
             if (n > 1 && leaves - 1 + std::size_t(n) > max_cells) break;
-            const leaf popped = open.pop();
+            const leaf popped = open.take(at);
             if (tolerance) bound_sum -= double(popped.bound), running -= contribution(popped);
             leaves += std::size_t(n) - 1;
             parent[parents++] = popped;
             children += n;
         }
         if (parents == 0) break;
-        // Children on the base level or above are known; the others are integrated together.
+        // A parent's only child (the same texels) takes the parent's integral; children on the
+        // base level or above are known; the others are integrated together.
         T i_d[8], fresh[8];
+        bool needed[8] = {};
         int uk[8] = {}, ui[8] = {}, uj[8] = {}, unknown = 0;
-        for (int m = 0; m < children; ++m)
-            if (child_k[m] >= base) i_d[m] = known[child_k[m] - base][child_j[m] * 4 + child_i[m]];
-            else uk[unknown] = child_k[m], ui[unknown] = child_i[m], uj[unknown] = child_j[m], ++unknown;
+        for (int m = 0; m < children; ++m) {
+            const bool only = (m == 0 || child_of[m - 1] != child_of[m]) &&
+                              (m + 1 == children || child_of[m + 1] != child_of[m]);
+            if (only) {
+                i_d[m] = parent[child_of[m]].i_d;
+            } else if (child_k[m] >= base) {
+                i_d[m] = known[child_k[m] - base][child_j[m] * 4 + child_i[m]];
+            } else {
+                needed[m] = true;
+                uk[unknown] = child_k[m], ui[unknown] = child_i[m], uj[unknown] = child_j[m], ++unknown;
+            }
+        }
         if (unknown > 0) {
             detail::cell_integrals(d, side, corners, uk, ui, uj, unknown, fresh, r.integrals);
             for (int m = 0, u = 0; m < children; ++m)
-                if (child_k[m] < base) i_d[m] = fresh[u++];
+                if (needed[m]) i_d[m] = fresh[u++];
         }
         for (int m = 0; m < children; ++m) {
-            // A parent with one child (the same texels): the child's integral is the parent's.
-            const leaf& p = parent[child_of[m]];
-            const bool only = (m == 0 || child_of[m - 1] != child_of[m]) &&
-                              (m + 1 == children || child_of[m + 1] != child_of[m]);
-            const leaf l = make(child_k[m], child_i[m], child_j[m], only ? p.i_d : i_d[m]);
+            const leaf l = make(child_k[m], child_i[m], child_j[m], i_d[m]);
             if (tolerance) bound_sum += double(l.bound), running += contribution(l);
             add(l);
         }
