@@ -30,8 +30,8 @@
 //       configurations, ref the full-refinement exact_cells value of the same configuration in
 //       double (budget 4096 >= the texel count: the exact integral of the texel-constant texture,
 //       up to rounding; for BM_shade, shade_textured_quad_light with that policy, specular +
-//       diffuse). The error against the texel-constant texture, not against Monte Carlo of the
-//       bilinear one (the report's reference); it includes float rounding for float.
+//       diffuse): the texture the report's Monte Carlo also integrates, without its noise; it
+//       includes float rounding for float.
 //   integrals  polygon integrals per item (the cells' `integrals` field; 1 per fetch).
 //
 // Run: ./build/benchmarks/bench_textured --benchmark_repetitions=5
@@ -166,6 +166,18 @@ double mean_integrals(ltc::textured_method m, texture_id t) {
     return n / double(integral_configs<T>().size());
 }
 
+// report() for the integrals out[i] of configs[i], against their references for texture t.
+template <typename T>
+void report_integrals(benchmark::State& state, const std::vector<integral_config<T>>& configs,
+                      const std::vector<glm::vec<3, T>>& out, texture_id t, double integrals) {
+    std::vector<double> value, ref;
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        value.push_back(double(out[i].x) + double(out[i].y) + double(out[i].z));
+        ref.push_back(configs[i].ref[t].x + configs[i].ref[t].y + configs[i].ref[t].z);
+    }
+    report(state, configs.size(), value, ref, integrals);
+}
+
 template <typename T>
 void BM_integral(benchmark::State& state, ltc::textured_method method, texture_id t) {
     const auto& configs = integral_configs<T>();
@@ -178,12 +190,7 @@ void BM_integral(benchmark::State& state, ltc::textured_method method, texture_i
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
-    std::vector<double> value, ref;
-    for (std::size_t i = 0; i < configs.size(); ++i) {
-        value.push_back(double(out[i].x) + double(out[i].y) + double(out[i].z));
-        ref.push_back(configs[i].ref[t].x + configs[i].ref[t].y + configs[i].ref[t].z);
-    }
-    report(state, configs.size(), value, ref, mean_integrals<T>(method, t));
+    report_integrals(state, configs, out, t, mean_integrals<T>(method, t));
 }
 
 // The four-argument overload (no policy): the paper's fetch as a renderer calls it, for comparison
@@ -199,12 +206,7 @@ void BM_integral_plain_fetch(benchmark::State& state, texture_id t) {
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
-    std::vector<double> value, ref;
-    for (std::size_t i = 0; i < configs.size(); ++i) {
-        value.push_back(double(out[i].x) + double(out[i].y) + double(out[i].z));
-        ref.push_back(configs[i].ref[t].x + configs[i].ref[t].y + configs[i].ref[t].z);
-    }
-    report(state, configs.size(), value, ref, 1);
+    report_integrals(state, configs, out, t, 1);
 }
 
 // The polygon integrals one shading call costs (specular and diffuse), averaged over the

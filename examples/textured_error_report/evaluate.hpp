@@ -16,22 +16,16 @@
 
 namespace textured_error_report {
 
-enum method_id { fetch, quick_cells, exact_cells, method_count };
-inline const char* const method_names[method_count] = {"fetch (paper)", "quick_cells (16)", "exact_cells (64)"};
-
-inline ltc::textured_policy policy_of(int m) {
-    ltc::textured_policy p;
-    p.method = m == fetch ? ltc::textured_method::fetch
-             : m == quick_cells ? ltc::textured_method::quick_cells
-                                : ltc::textured_method::exact_cells;
-    p.budget.max_cells = 64;
-    return p;
-}
+// cells_16_means: integrate_textured_cells with quick_cells' 16 cells, every leaf its mean (what
+// quick_cells does without the fetch in leaves wider than the lobe).
+enum method_id { fetch, cells_16_means, quick_cells, exact_cells, method_count };
+inline const char* const method_names[method_count] = {"fetch (paper)", "16 cells, means", "quick_cells (16)",
+                                                       "exact_cells (64)"};
 
 /// Everything measured for one configuration and one texture. Monte Carlo values are of the
 /// RGB sum of the radiance (the errors sum RGB before the ratio).
 struct texture_result {
-    dvec3 approx[method_count];          ///< integrate_textured_quad(d, quad, tex, two_sided, policy)
+    dvec3 approx[method_count];          ///< the methods' values (method_id)
     std::size_t integrals[method_count]; ///< polygon integrals per method (1 for the fetch)
     dvec3 full{0.0};                     ///< exact_cells with 64 x 64 cells: the texel-constant integral
     double truth = 0, truth_se = 0;      ///< MC of int L D, L texel-constant (nearest_image_lookup)
@@ -72,14 +66,22 @@ inline config_result evaluate(const config& c, std::size_t index, const inputs& 
         const auto& tex = in.prefiltered[std::size_t(ti)];
         const auto& density = in.densities[std::size_t(ti)];
         texture_result& t = r.tex[ti];
-        for (int m = 0; m < method_count; ++m) {
-            const ltc::textured_policy p = policy_of(m);
-            t.approx[m] = ltc::integrate_textured_quad(c.d, c.quad, tex, ltc::sidedness::two_sided, p);
-            ltc::cell_budget b = p.budget;
-            if (m == quick_cells) b.max_cells = ltc::textured_policy::quick_cells_budget;
-            t.integrals[m] = m == fetch ? 1 : ltc::integrate_textured_cells(c.d, c.quad, tex.cells(),
-                                                                            ltc::sidedness::two_sided, b).integrals;
-        }
+        const auto side = ltc::sidedness::two_sided;
+        t.approx[fetch] = ltc::integrate_textured_quad(c.d, c.quad, tex, side);
+        t.integrals[fetch] = 1;
+        ltc::cell_budget quick;
+        quick.max_cells = ltc::textured_policy::quick_cells_budget;
+        const auto means = ltc::integrate_textured_cells(c.d, c.quad, tex.cells(), side, quick);
+        t.approx[cells_16_means] = means.value;
+        t.integrals[cells_16_means] = t.integrals[quick_cells] = means.integrals;  // the same quadtree
+        ltc::textured_policy p;
+        p.method = ltc::textured_method::quick_cells;
+        t.approx[quick_cells] = ltc::integrate_textured_quad(c.d, c.quad, tex, side, p);
+        ltc::cell_budget exact;
+        exact.max_cells = 64;
+        const auto cells = ltc::integrate_textured_cells(c.d, c.quad, tex.cells(), side, exact);
+        t.approx[exact_cells] = cells.value;
+        t.integrals[exact_cells] = cells.integrals;
         ltc::cell_budget all;
         all.max_cells = std::size_t(im.w) * std::size_t(im.h);
         t.full = ltc::integrate_textured_cells(c.d, c.quad, tex.cells(), ltc::sidedness::two_sided, all).value;

@@ -168,8 +168,8 @@ struct textured_policy {
 
     /// The budget quick_cells uses: 16 cells. On the textured error report's lights (against
     /// the exact integral, mean / max): 16 cells leave a small bright detail 0.71% / 2.9% off and
-    /// smooth textures 1.8% / 23%; 13 cells 3.3% / 69% and 2.5% / 25%; 10 cells 11% / 91% and
-    /// 3.5% / 28%.
+    /// smooth textures 1.8% / 23%; with this constant set to 13 and the report rebuilt, 3.3% /
+    /// 69% and 2.5% / 25%; to 10, 11% / 91% and 3.5% / 28%.
     static constexpr std::size_t quick_cells_budget = 16;
 };
 
@@ -186,8 +186,9 @@ inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T
             // An inexact leaf wider than about 4 sigma of the fetch (2^k texels against sigma =
             // 2^(lod - 1) texels) holds a lobe sharper than itself: it takes the fetch at the
             // foot point clamped into it (the paper's, restricted to the leaf); the others their
-            // mean. Measured in the README: the means alone were off by up to 280% on a checker
-            // under a sharp lobe, where this is off by 42% (the fetch alone: 43%).
+            // mean. examples/textured_error_report's row "16 cells, means" measures the means
+            // alone: up to 280% off on its checker under a sharp lobe, where this is 41% off (the
+            // fetch alone: 43%).
             // The fetch's parameters on demand: only inexact leaves need them.
             textured_fetch<T> f;
             double lod = 0;
