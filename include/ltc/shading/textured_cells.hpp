@@ -67,8 +67,9 @@ struct cells_result {
 
 
 /// integrate_textured_cells with the radiance of the leaves that remain inexact (range > 0,
-/// above level 0) given by open_value(k, i, j) -> glm::dvec3 instead of their mean (the quick
-/// policy of ltc/shading/textured_light.hpp); error_bound then bounds the means' version only.
+/// above level 0) given by open_value(k, i, j) -> glm::dvec3 instead of their mean (e.g. a
+/// fetch, as ltc/shading/quick_cells.hpp does in its own leaves); error_bound then bounds the
+/// means' version only.
 template <typename T, typename OpenValue>
 inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
                                                      const cell_pyramid<T>& cells, sidedness side,
@@ -76,39 +77,18 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     using vec3 = glm::vec<3, T>;
     using leaf = detail::cell_leaf<T>;
     cells_result<T> r;
-    // Only directions matter: corners near the largest finite value are scaled by 2^-4 (exactly)
-    // so that the parallelogram's fourth corner q0 + e1 + e3 cannot overflow.
-    vec3 q[4] = {quad[0], quad[1], quad[2], quad[3]};
-    T largest(0);
-    for (const vec3& p : q) largest = std::max(largest, std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z))));
-    if (largest > std::numeric_limits<T>::max() / T(8))
-        for (vec3& p : q) p *= T(0.0625);
-    if (!(largest <= std::numeric_limits<T>::max())) {
-        // A non-finite corner (a caller's overflow, e.g. world to local): no cell geometry. Like
-        // the fetch, whose parameters are then invalid: I_D of the quad times the texture's mean.
+    vec3 q[4];
+    if (!detail::cell_corners(quad, q)) {
         const int top = cells.level_count() - 1;
-        T i_d = d.integrate(quad, 4, side);
-        if (!(i_d > T(0))) i_d = T(0);  // NaN from the non-finite corner: nothing (as the fetch)
+        const T i_d = detail::quad_integral_or_zero(d, quad, side);
         r.value = vec3(double(i_d) * glm::dvec3(cells.mean(top, 0, 0)));
         r.error_bound = cells.range(top, 0, 0) * i_d;
         r.cells = 1, r.integrals = 1;
         return r;
     }
-    const vec3 q0 = q[0], e1 = q[1] - q[0], e3 = q[3] - q[0];
-    const T du = T(1) / T(cells.width()), dv = T(1) / T(cells.height());
-    // The quad of cell (k, i, j), corners from the texel indices (neighbours share them bit for bit).
-    const auto corners = [&](int k, int i, int j, vec3 (&c)[4]) {
-        int x0, y0, x1, y1;
-        cells.texels(k, i, j, x0, y0, x1, y1);
-        const T u0 = T(x0) * du, u1 = T(x1) * du, v0 = T(y0) * dv, v1 = T(y1) * dv;
-        c[0] = q0 + u0 * e1 + v0 * e3, c[1] = q0 + u1 * e1 + v0 * e3;
-        c[2] = q0 + u1 * e1 + v1 * e3, c[3] = q0 + u0 * e1 + v1 * e3;
-    };
-    const auto make = [&](int k, int i, int j, T i_d) {
-        const T bound = k == 0 ? T(0) : cells.range(k, i, j) * i_d;
-        return leaf{bound, i_d, k, i, j};
-    };
-    const auto contribution = [&](const leaf& l) { return double(l.i_d) * glm::dvec3(cells.mean(l.k, l.i, l.j)); };
+    const detail::cell_geometry<T> geometry = detail::make_cell_geometry(q, cells);
+    const auto bound_of = [&](int k, int i, int j, T i_d) { return k == 0 ? T(0) : cells.range(k, i, j) * i_d; };
+    const auto contribution = [&](int k, int i, int j, T i_d) { return double(i_d) * glm::dvec3(cells.mean(k, i, j)); };
     const int top = cells.level_count() - 1;
     const std::size_t max_cells = std::max<std::size_t>(budget.max_cells, 1);
     // The leaves that may still be refined: on the stack for the usual budgets (no allocation
@@ -118,9 +98,15 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     std::vector<leaf> heap_storage(max_cells > stack_leaves ? max_cells : 0);
     detail::open_leaves<T> open(max_cells > stack_leaves ? heap_storage.data() : stack, max_cells > stack_leaves);
     glm::dvec3 exact_sum(0.0);
-    const auto add = [&](const leaf& l) {
-        if (l.bound > T(0)) open.push(l);
-        else exact_sum += contribution(l);
+    // The summed bound and the value of the current leaves, kept for the tolerance only.
+    const bool tolerance = budget.tolerance > 0;
+    double bound_sum = 0;
+    glm::dvec3 running(0.0);
+    const auto add = [&](int k, int i, int j, T i_d) {
+        const T bound = bound_of(k, i, j, i_d);
+        if (tolerance) bound_sum += double(bound), running += contribution(k, i, j, i_d);
+        if (bound > T(0)) open.push(bound, i_d, k, i, j);
+        else exact_sum += contribution(k, i, j, i_d);
     };
     // The cells of level base = top - 2 (at most 4 x 4) in one call; the I_D of the levels above
     // are their sums (I_D adds up over cells of one orientation), so the root and the first two
@@ -132,7 +118,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
         for (int b = 0; b < cells.cells_y(base); ++b)
             for (int a = 0; a < cells.cells_x(base); ++a) k[n] = base, i[n] = a, j[n] = b, ++n;
         T packed[16];
-        detail::cell_integrals(d, side, corners, k, i, j, n, packed, r.integrals);
+        detail::cell_integrals(d, side, geometry, cells, k, i, j, n, packed, r.integrals);
         for (int m = 0; m < n; ++m) known[0][j[m] * 4 + i[m]] = packed[m];
         for (int l = 1; l <= top - base; ++l)
             for (int b = 0; b < cells.cells_y(base + l); ++b)
@@ -144,19 +130,13 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
                     known[l][b * 4 + a] = sum;
                 }
     }
-    // The summed bound and the value of the current leaves, kept for the tolerance only.
-    const bool tolerance = budget.tolerance > 0;
-    double bound_sum = 0;
-    glm::dvec3 running(0.0);
-    const leaf root = make(top, 0, 0, known[top - base][0]);
-    add(root);
-    if (tolerance) bound_sum += double(root.bound), running += contribution(root);
+    add(top, 0, 0, known[top - base][0]);
     std::size_t leaves = 1;
     // Each step refines the two leaves of largest bound (one if the budget allows only one), so
     // that their up to 8 children are integrated together: 8 lanes of the float batch kernel.
     while (open.size() > 0) {
         if (tolerance && bound_sum <= budget.tolerance * std::max(running.x, std::max(running.y, running.z))) break;
-        leaf parent[2];
+        T parent_i_d[2];
         int child_k[8] = {}, child_i[8] = {}, child_j[8] = {}, child_of[8] = {};
         int parents = 0, children = 0;
         while (parents < 2 && open.size() > 0) {
@@ -172,9 +152,9 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
                     }
             if (n > 1 && leaves - 1 + std::size_t(n) > max_cells) break;
             const leaf popped = open.take(at);
-            if (tolerance) bound_sum -= double(popped.bound), running -= contribution(popped);
+            if (tolerance) bound_sum -= double(popped.bound), running -= contribution(popped.k, popped.i, popped.j, popped.i_d);
             leaves += std::size_t(n) - 1;
-            parent[parents++] = popped;
+            parent_i_d[parents++] = popped.i_d;
             children += n;
         }
         if (parents == 0) break;
@@ -187,7 +167,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
             const bool only = (m == 0 || child_of[m - 1] != child_of[m]) &&
                               (m + 1 == children || child_of[m + 1] != child_of[m]);
             if (only) {
-                i_d[m] = parent[child_of[m]].i_d;
+                i_d[m] = parent_i_d[child_of[m]];
             } else if (child_k[m] >= base) {
                 i_d[m] = known[child_k[m] - base][child_j[m] * 4 + child_i[m]];
             } else {
@@ -196,21 +176,18 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
             }
         }
         if (unknown > 0) {
-            detail::cell_integrals(d, side, corners, uk, ui, uj, unknown, fresh, r.integrals);
+            detail::cell_integrals(d, side, geometry, cells, uk, ui, uj, unknown, fresh, r.integrals);
             for (int m = 0, u = 0; m < children; ++m)
                 if (needed[m]) i_d[m] = fresh[u++];
         }
-        for (int m = 0; m < children; ++m) {
-            const leaf l = make(child_k[m], child_i[m], child_j[m], i_d[m]);
-            if (tolerance) bound_sum += double(l.bound), running += contribution(l);
-            add(l);
-        }
+        for (int m = 0; m < children; ++m) add(child_k[m], child_i[m], child_j[m], i_d[m]);
     }
     // Summed afresh: the running value drifts by its subtractions.
     glm::dvec3 sum = exact_sum;
     double bound = 0;
     for (std::size_t m = 0; m < open.size(); ++m) {
-        sum += double(open[m].i_d) * glm::dvec3(open_value(open[m].k, open[m].i, open[m].j));
+        const leaf& l = open[m];
+        sum += double(l.i_d) * glm::dvec3(open_value(l.k, l.i, l.j));
         bound += double(open[m].bound);
     }
     r.value = vec3(sum);
