@@ -4,10 +4,9 @@
 //                the paper's I_D I_L, one polygon integral and one trilinear fetch of the
 //                prefiltered texture (BM_plain_fetch_float: the overload without a policy, the
 //                same computation without the method switch);
-//   quick_cells  policy.method = quick_cells: the quadtree of ltc/shading/textured_cells.hpp with
-//                textured_policy::quick_cells_budget (16) leaves: the 16 cells two levels below
-//                the root in one batch call, up to 8 more per refinement step below them, plus
-//                the fetch's parameters and a fetch per leaf wider than the lobe;
+//   quick_cells  policy.method = quick_cells (ltc/shading/quick_cells.hpp): the 16 cells two
+//                levels below the root in one batch call, up to 8 of their children in a second,
+//                plus the fetch's parameters and a fetch per wide leaf holding a quarter of I_D;
 //   exact_cells  policy.method = exact_cells with budget.max_cells = 64;
 // and the whole shading call ltc::shade_textured_quad_light (frame, GGX table fetch, specular and
 // diffuse textured integrals) by each method, in float (BM_shade).
@@ -42,6 +41,7 @@
 
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/light_texture.hpp>
+#include <ltc/shading/quick_cells.hpp>
 #include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/textured_cells.hpp>
 #include <ltc/shading/textured_light.hpp>
@@ -153,16 +153,23 @@ void report(benchmark::State& state, std::size_t items, const std::vector<double
     state.counters["integrals"] = integrals;
 }
 
+// The polygon integrals of one textured integral by a cell method (exact_cells with 64 cells).
+template <typename T>
+std::size_t cell_integrals(ltc::textured_method m, const ltc::transformed<ltc::clamped_cosine<T>>& d,
+                           const glm::vec<3, T>* quad, const ltc::light_texture<T>& tex) {
+    if (m == ltc::textured_method::quick_cells) return ltc::integrate_quick_cells(d, quad, tex).integrals;
+    ltc::cell_budget b;
+    b.max_cells = 64;
+    return ltc::integrate_textured_cells(d, quad, tex.cells(), ltc::sidedness::two_sided, b).integrals;
+}
+
 // The polygon integrals one textured integral costs, averaged over the configurations.
 template <typename T>
 double mean_integrals(ltc::textured_method m, texture_id t) {
     if (m == ltc::textured_method::fetch) return 1;
-    ltc::cell_budget b;
-    b.max_cells = m == ltc::textured_method::quick_cells ? ltc::textured_policy::quick_cells_budget : 64;
     double n = 0;
     for (const auto& c : integral_configs<T>())
-        n += double(ltc::integrate_textured_cells(c.d, c.quad.data(), texture<T>(t).cells(), ltc::sidedness::two_sided, b)
-                        .integrals);
+        n += double(cell_integrals(m, c.d, c.quad.data(), texture<T>(t)));
     return n / double(integral_configs<T>().size());
 }
 
@@ -213,9 +220,6 @@ void BM_integral_plain_fetch(benchmark::State& state, texture_id t) {
 // configurations: the calls of shade_textured_quad_light repeated (frame, table fetch, lobes).
 double mean_shading_integrals(ltc::textured_method m, texture_id t) {
     if (m == ltc::textured_method::fetch) return 2;
-    ltc::cell_budget b;
-    b.max_cells = m == ltc::textured_method::quick_cells ? ltc::textured_policy::quick_cells_budget : 64;
-    const auto& cells = texture<float>(t).cells();
     const auto cosine = ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(glm::mat3(1.0f));
     double n = 0;
     for (const shading_config& c : shading_configs()) {
@@ -225,7 +229,7 @@ double mean_shading_integrals(ltc::textured_method m, texture_id t) {
         const auto spec = ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(
             ltc::ggx::fetch<float>(frame.cos_theta_v, c.roughness).m_inv);
         for (const auto* d : {&spec, &cosine})
-            n += double(ltc::integrate_textured_cells(*d, local, cells, ltc::sidedness::two_sided, b).integrals);
+            n += double(cell_integrals(m, *d, local, texture<float>(t)));
     }
     return n / double(shading_configs().size());
 }

@@ -37,10 +37,12 @@
 //                    fetch        (the default) I_D I_L: the exact polygon integral times one
 //                                 trilinear fetch into the prefiltered ltc::light_texture (the
 //                                 paper, sections 5.2-5.4);
-//                    quick_cells  the texel-constant texture over 16 adaptive cells of the
-//                                 texture's cell pyramid, each cell's I_D exact and its radiance
-//                                 the mean of its texels (ltc/shading/textured_cells.hpp);
-//                    exact_cells  the same with a budget of --cells cells (default 64): the
+//                    quick_cells  16 to 22 cells of the texture's cell pyramid, each cell's
+//                                 I_D exact, its radiance the mean of its texels or, in a cell
+//                                 wider than the lobe, a fetch (ltc/shading/quick_cells.hpp);
+//                    exact_cells  the texel-constant texture over adaptive cells
+//                                 (ltc/shading/textured_cells.hpp), a budget of --cells cells
+//                                 (default 64): the
 //                                 exact integral of the texel-constant texture once every cell
 //                                 is a texel, and converging to it as the budget grows;
 //                    all          the three (below). float.

@@ -27,7 +27,7 @@ namespace render {
 /// The textured light's LTC render by one method (--textured-method).
 struct textured_run {
     ltc::textured_policy policy;
-    std::string label;  // "fetch", "quick_cells (16 cells)", "exact_cells (N cells)"
+    std::string label;  // "fetch", "quick_cells", "exact_cells (N cells)"
     std::vector<dvec3> ltc;  // its contribution (and its emitter)
     double seconds = INFINITY;  // best of 5
 };
@@ -42,19 +42,14 @@ inline std::vector<textured_run> make_textured_runs(const options& opt, bool tex
         r.policy.method = opt.textured_methods[k];
         r.policy.budget.max_cells = opt.cells;
         r.label = method_name(r.policy.method);
-        if (r.policy.method != ltc::textured_method::fetch)
-            r.label += " (" +
-                       std::to_string(r.policy.method == ltc::textured_method::quick_cells
-                                          ? ltc::textured_policy::quick_cells_budget
-                                          : opt.cells) +
-                       " cells)";
+        if (r.policy.method == ltc::textured_method::exact_cells) r.label += " (" + std::to_string(opt.cells) + " cells)";
         r.ltc.assign(count, dvec3(0.0));
         runs.push_back(std::move(r));
     }
     return runs;
 }
 
-/// " by quick_cells (16 cells)" after "textured light" where the method is named: with all, or
+/// " by exact_cells (64 cells)" after "textured light" where the method is named: with all, or
 /// with one method other than the default fetch (the default run's lines are left as they were).
 inline std::string method_note(const std::vector<textured_run>& runs) {
     const bool compare = runs.size() > 1;  // --textured-method all

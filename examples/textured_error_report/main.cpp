@@ -6,9 +6,9 @@
 //
 // Methods (double precision):
 //   fetch (paper)     textured_method::fetch: I_D I_L, one prefiltered fetch (sections 5.2-5.4)
-//   16 cells, means   integrate_textured_cells with 16 cells, each its texels' mean: quick_cells
-//                     without its fetch in leaves wider than the lobe (why that rule is there)
-//   quick_cells (16)  textured_method::quick_cells
+//   quick_cells, means  integrate_quick_cells(..., use_fetch = false): quick_cells' leaves, each
+//                     its texels' mean, without the fetch in wide leaves (why that rule is there)
+//   quick_cells       textured_method::quick_cells
 //   exact_cells (64)  textured_method::exact_cells, budget.max_cells = 64
 //
 // Truth: the texture every method approximates is the texel-constant one (radiance
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
     const std::size_t significant = std::size_t(std::count_if(res.begin(), res.end(), [](const config_result& r) {
         return r.significant;
     }));
-    std::printf("Textured quad lights: fetch (paper), 16 cells with means, quick_cells (16), exact_cells (64)\n"
+    std::printf("Textured quad lights: fetch (paper), quick_cells with means, quick_cells, exact_cells (64)\n"
                 "against Monte Carlo of the texel-constant texture\n");
     std::printf("%zu configurations (%zu skipped: I_D < 1e-4) x %d textures = %zu cases; MC 2^15 iterations each\n\n",
                 grid.size(), grid.size() - significant, int(texture_count), significant * texture_count);

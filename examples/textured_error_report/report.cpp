@@ -111,16 +111,16 @@ void print_methods(const std::vector<config>& grid, const std::vector<config_res
         }
     });
     std::printf("\n2. Texture error |approx - MC| / MC of int L D, by method and texture\n");
-    std::printf("%-17s %-14s| %-27s %8s | %s\n", "method", "texture", "texture error mean/p95/max", "bias",
+    std::printf("%-19s %-14s| %-27s %8s | %s\n", "method", "texture", "texture error mean/p95/max", "bias",
                 "shading error mean/p95/max");
     for (int m = 0; m < method_count; ++m) {
         for (int ti = 0; ti < texture_count; ++ti)
-            std::printf("%-17s %-14s| %8s %8s %9s %+7.2f%% | %8s %8s %9s\n", ti == 0 ? method_names[m] : "",
+            std::printf("%-19s %-14s| %8s %8s %9s %+7.2f%% | %8s %8s %9s\n", ti == 0 ? method_names[m] : "",
                         in.textures[std::size_t(ti)].name.c_str(), pc(err[m][ti].mean()).c_str(),
                         pc(err[m][ti].pct(0.95)).c_str(), pc(err[m][ti].max()).c_str(), 100 * bias[m][ti].mean(),
                         pc(shade[m][ti].mean()).c_str(), pc(shade[m][ti].pct(0.95)).c_str(),
                         pc(shade[m][ti].max()).c_str());
-        std::printf("%-17s polygon integrals per textured integral: mean %.1f, max %.0f\n", "", integrals[m].mean(),
+        std::printf("%-19s polygon integrals per textured integral: mean %.1f, max %.0f\n", "", integrals[m].mean(),
                     integrals[m].max());
     }
     std::printf("(bias: mean signed texture error; shading error: |magnitude approx - MC| / MC of int L rho cos,\n"

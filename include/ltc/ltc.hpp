@@ -31,7 +31,9 @@
 #include <ltc/shading/clipless.hpp>
 #include <ltc/shading/cell_pyramid.hpp>
 #include <ltc/shading/light_texture.hpp>
+#include <ltc/shading/quick_cells.hpp>
 #include <ltc/shading/textured_cells.hpp>
+#include <ltc/shading/textured_fetch.hpp>
 #include <ltc/shading/textured_light.hpp>
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_shading.hpp>

@@ -11,10 +11,11 @@
 // Methods (textured_policy): `fetch`, the paper's I_D I_L below; `exact_cells`, the integral of
 // the texel-constant texture over adaptive cells, each cell's I_D exact and its radiance the
 // mean of its texels (ltc/shading/textured_cells.hpp, with an error bound and a budget);
-// `quick_cells`, the real-time improvement on the fetch: the same quadtree with 16 cells, where a
-// cell that stays wider than the lobe's footprint takes the paper's fetch at the foot point
-// clamped into it instead of its mean (the README's textured table measures all three against
-// Monte Carlo and against each other's cost).
+// `quick_cells`, the real-time improvement on the fetch (ltc/shading/quick_cells.hpp): 16 exact
+// cells and up to 8 of their children in two kernel calls, each leaf its mean, or the paper's
+// fetch at the foot point clamped into it in the (at most) four leaves of largest I_D that are
+// wider than the lobe (the README's textured table measures all three against Monte Carlo and
+// against each other's cost).
 //
 // Eq. (12)-(14). With L(w) the texture seen through the quad, the integral of L D splits into
 //
@@ -75,8 +76,8 @@
 //     missed (errors near -90%: the result is the background) or smeared over the wrong place
 //     (+150% to +330% at distance 0.5, roughness 0.25-0.5, theta_v 60-80 deg). The bias is
 //     -9.5% on average. The paper presents I_L as an approximation for this reason.
-// The cell methods: quick_cells 0.47% / 2.4% / 4.9%, 3.2% / 9.0% / 23%, 2.3% / 13% / 42% and
-// 1.1% / 2.7% / 3.9% on the same four; exact_cells (64 cells) at most 0.75% mean and 3.0% max on
+// The cell methods: quick_cells 0.34% / 1.2% / 2.6%, 2.3% / 8.0% / 16%, 2.0% / 9.0% / 32% and
+// 2.4% / 6.7% / 9.6% on the same four; exact_cells (64 cells) at most 0.75% mean and 3.0% max on
 // every texture (the README's table).
 // Shading errors (magnitude I_D I_L against MC of int L rho cos) add the GGX fit's own error
 // (mean 3.5-11% by roughness, up to 88% at roughness 0.1 and grazing view in this grid).
@@ -85,7 +86,9 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/light_texture.hpp>
+#include <ltc/shading/quick_cells.hpp>
 #include <ltc/shading/textured_cells.hpp>
+#include <ltc/shading/textured_fetch.hpp>
 #include <ltc/core/polygon.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/core/transformed.hpp>
@@ -96,51 +99,6 @@
 #include <limits>
 
 namespace ltc {
-
-/// The parameters of the prefiltered fetch (file comment).
-template <typename T>
-struct textured_fetch {
-    glm::vec<2, T> uv{T(0.5), T(0.5)};          ///< texture coordinates of the foot point
-    T sigma{std::numeric_limits<T>::infinity()}; ///< sqrt(r^2 / (2 A)), uv units
-    T distance{0};  ///< |r| / sqrt(A): the distance to the plane in units of sqrt(area)
-    bool valid{false};
-};
-
-/// Section 5.4: texture coordinates and filter width of the fetch for the quad quad[0..3]
-/// (corners with uv (0,0), (1,0), (1,1), (0,1)), seen from the origin through the LTC whose
-/// inverse matrix is m_inv (any scale; the identity for the clamped cosine itself).
-template <typename T>
-inline textured_fetch<T> fetch_parameters(const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T> quad[4]) {
-    using vec3 = glm::vec<3, double>;
-    textured_fetch<T> out;
-    double s = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int c = 0; c < 3; ++c) s = std::max(s, std::abs(static_cast<double>(quad[i][c])));
-    if (!(s > 0) || !std::isfinite(s)) return out;
-    const glm::dmat3 mi(m_inv);
-    vec3 q[4];
-    for (int i = 0; i < 4; ++i) q[i] = mi * (vec3(quad[i]) / s);
-    const vec3 e1 = q[1] - q[0], e3 = q[3] - q[0];
-    const vec3 n = glm::cross(q[2] - q[0], q[3] - q[1]);
-    const double n_len = glm::length(n);
-    const double area = 0.5 * n_len;
-    const vec3 c13 = glm::cross(e1, e3);
-    const double det = glm::dot(c13, c13);
-    if (!(area > 0) || !(det > 0) || !std::isfinite(n_len) || !std::isfinite(det)) return out;
-    const vec3 nh = n / n_len;
-    const double r = glm::dot(nh, 0.25 * (q[0] + q[1] + q[2] + q[3]));
-    const vec3 w = r * nh - q[0];
-    const double u = glm::dot(glm::cross(w, e3), c13) / det;
-    const double v = glm::dot(glm::cross(e1, w), c13) / det;
-    const double sigma = std::abs(r) / std::sqrt(2.0 * area);
-    if (!std::isfinite(u) || !std::isfinite(v) || !std::isfinite(sigma)) return out;
-    constexpr double far = 1e6;  // far outside the texture: the lookup clamps anyway
-    out.uv = glm::vec<2, T>(T(std::min(std::max(u, -far), far)), T(std::min(std::max(v, -far), far)));
-    out.sigma = T(sigma);
-    out.distance = T(std::abs(r) / std::sqrt(area));
-    out.valid = true;
-    return out;
-}
 
 /// I_D I_L (eq. 12-14) for the LTC d and the textured quad (file comment): the RGB
 /// approximation of int_quad L(w) D(w) dw. Two-sided by default (like transformed::integrate);
@@ -158,7 +116,7 @@ inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T
 /// and shade_textured_quad_light).
 enum class textured_method {
     fetch,        ///< I_D I_L with one prefiltered fetch (sections 5.3-5.4; the default)
-    quick_cells,  ///< 16 adaptive cells, the fetch inside those wider than the lobe (README)
+    quick_cells,  ///< integrate_quick_cells: 16 to 22 cells, a fetch in the wide ones (README)
     exact_cells,  ///< integrate_textured_cells with textured_policy::budget
 };
 
@@ -166,10 +124,8 @@ struct textured_policy {
     textured_method method = textured_method::fetch;
     cell_budget budget{};  ///< exact_cells only: 64 cells by default
 
-    /// The budget quick_cells uses: 16 cells. On the textured error report's lights (against
-    /// the exact integral, mean / max): 16 cells leave a small bright detail 0.71% / 2.9% off and
-    /// smooth textures 1.8% / 23%; with this constant set to 13 and the report rebuilt, 3.3% /
-    /// 69% and 2.5% / 25%; to 10, 11% / 91% and 3.5% / 28%.
+    /// The cells of quick_cells' first kernel call (ltc/shading/quick_cells.hpp: the level two
+    /// below the last, at most 4 x 4); its second call adds up to 8. quick_cells ignores budget.
     static constexpr std::size_t quick_cells_budget = 16;
 };
 
@@ -180,31 +136,7 @@ inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T
                                               const light_texture<T>& tex, sidedness side,
                                               const textured_policy& policy) {
     switch (policy.method) {
-        case textured_method::quick_cells: {
-            cell_budget b;
-            b.max_cells = textured_policy::quick_cells_budget;
-            // An inexact leaf wider than about 4 sigma of the fetch (2^k texels against sigma =
-            // 2^(lod - 1) texels) holds a lobe sharper than itself: it takes the fetch at the
-            // foot point clamped into it (the paper's, restricted to the leaf); the others their
-            // mean. examples/textured_error_report's row "16 cells, means" measures the means
-            // alone: up to 280% off on its checker under a sharp lobe, where this is 41% off (the
-            // fetch alone: 43%).
-            // The fetch's parameters on demand: only inexact leaves need them.
-            textured_fetch<T> f;
-            double lod = 0;
-            bool fetched = false;
-            const cell_pyramid<T>& cells = tex.cells();
-            const auto value = [&](int k, int i, int j) {
-                if (!fetched) f = fetch_parameters(d.inverse_matrix(), quad), lod = double(tex.lod_for_sigma(f.sigma)), fetched = true;
-                if (!f.valid || double(k) <= lod + 1) return glm::dvec3(cells.mean(k, i, j));
-                int x0, y0, x1, y1;
-                cells.texels(k, i, j, x0, y0, x1, y1);
-                const double u = std::min(std::max(double(f.uv.x), double(x0) / cells.width()), double(x1) / cells.width());
-                const double v = std::min(std::max(double(f.uv.y), double(y0) / cells.height()), double(y1) / cells.height());
-                return glm::dvec3(tex.lookup(glm::vec<2, T>(T(u), T(v)), T(lod)));
-            };
-            return integrate_textured_cells_with(d, quad, cells, side, b, value).value;
-        }
+        case textured_method::quick_cells: return integrate_quick_cells(d, quad, tex, side).value;
         case textured_method::exact_cells: return integrate_textured_cells(d, quad, tex.cells(), side, policy.budget).value;
         default: return integrate_textured_quad(d, quad, tex, side);
     }
