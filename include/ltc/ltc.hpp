@@ -4,9 +4,10 @@
 // (Heitz, Dupuy, Hill, Neubelt, "Real-Time Polygonal-Light Shading with Linearly Transformed
 // Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. The folders are the layers:
 //
-//   ltc/core/       the paper's mathematics: the original distributions, transformed<>, and the
-//                   polygon machinery (horizon clipping, edge terms, form factors, solid angles);
-//   ltc/shading/    what a renderer shades with: polygonal and textured lights, the GGX table
+//   ltc/core/       the paper's mathematics: the original distributions, transformed<>, the
+//                   polygon machinery (horizon clipping, edge terms, form factors, solid angles),
+//                   and the integrals over lines and ellipses (disks);
+//   ltc/shading/    what a renderer shades with: polygonal, textured, disk, sphere and tube lights, the GGX table
 //                   fetch, the clipless approximation, structure-of-arrays batches;
 //   ltc/fitting/    offline: BRDF models and the fitter that makes the tables;
 //   ltc/reference/  Monte Carlo ground truth, to validate the approximations (and a renderer);
@@ -24,6 +25,8 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/squared_clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
+#include <ltc/core/line_integral.hpp>
+#include <ltc/core/ellipse_integral.hpp>
 
 #include <ltc/shading/table.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
@@ -35,6 +38,9 @@
 #include <ltc/shading/textured_cells.hpp>
 #include <ltc/shading/textured_fetch.hpp>
 #include <ltc/shading/textured_light.hpp>
+#include <ltc/shading/disk_light.hpp>
+#include <ltc/shading/sphere_light.hpp>
+#include <ltc/shading/line_light.hpp>
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_shading.hpp>
 
@@ -45,3 +51,4 @@
 
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/reference/textured_ground_truth.hpp>
+#include <ltc/reference/shape_ground_truth.hpp>
