@@ -10,6 +10,7 @@
 // tests/fuzz/corpus (see .ci/run).
 #include "fuzz_batch.hpp"
 #include "fuzz_common.hpp"
+#include "fuzz_shapes.hpp"
 #include "fuzz_textured.hpp"
 
 #include <ltc/ltc.hpp>
@@ -29,7 +30,7 @@
 
 namespace {
 
-using namespace ltc_fuzz;  // fuzz_common.hpp, fuzz_batch.hpp, fuzz_textured.hpp
+using namespace ltc_fuzz;  // fuzz_common.hpp, fuzz_batch.hpp, fuzz_textured.hpp, fuzz_shapes.hpp
 
 template <typename T, typename Dist>
 void check_distribution(const glm::vec<3, T>* v, std::size_t n, const glm::mat<3, 3, T>& m, bool use_inverse,
@@ -97,6 +98,7 @@ void run(FuzzedDataProvider& in) {
 
     check_batch<T>(in, m, v);
     check_textured<T>(in, m, v, P, N, V, roughness);
+    check_shapes<T>(in, m, v, P, N, V, roughness);
 }
 
 }  // namespace

@@ -27,7 +27,6 @@
 
 #include <glm/glm.hpp>
 
-#include <algorithm>
 #include <limits>
 
 namespace ltc {
@@ -43,8 +42,13 @@ inline polygon_light_result<T> shade_line_light(const shading_frame<T>& frame, c
     const glm::vec<3, T> a = frame.to_local(p0 - P), b = frame.to_local(p1 - P);
     const auto spec = transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv);
     const glm::vec<3, T> brdf_scale = F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel;
-    // 2 r I: I <= its largest finite value, and a huge r times it must not overflow either.
-    const auto width = [&](T i) { return std::min(T(2) * radius * i, std::numeric_limits<T>::max()); };
+    // 2 r I, saturated at the largest finite value (a huge r times I; 0 times an infinite 2r
+    // would be NaN).
+    const auto width = [&](T i) {
+        if (!(i > T(0))) return T(0);
+        const T w = radius * i;
+        return w < std::numeric_limits<T>::max() / T(2) ? T(2) * w : std::numeric_limits<T>::max();
+    };
     r.specular = radiance * brdf_scale * width(integrate_line(spec, a, b));
     r.diffuse = albedo * radiance * width(integrate_line_cosine(a, b));
     return r;
