@@ -241,3 +241,48 @@ TEST_CASE("integrate_disk equals brute force of the LTC's density over the disk"
         }
     print_worst("disk integral (quadrature of eval)");
 }
+
+namespace {
+
+/// c = b with one coordinate moved by 1-2 ulps: the origin (c - b, the boundary point phi =
+/// -pi/2) is on the ellipse's rim and within rounding of its plane, where the cone's secular
+/// equation loses every digit (make_cone_axis's floored step).
+template <typename T>
+void check_rim_and_plane(ltc_test::rng& r) {
+    using vec3 = glm::vec<3, T>;
+    for (int i = 0; i < 2000; ++i) {
+        vec3 a, b;
+        for (int j = 0; j < 3; ++j) a[j] = T(r.uniform(-1, 1));  // one draw per statement
+        for (int j = 0; j < 3; ++j) b[j] = T(r.uniform(-1, 1));
+        vec3 c = b;
+        const int k = i % 3, ulps = i % 5 - 2;
+        for (int j = 0; j < std::abs(ulps); ++j) c[k] = std::nextafter(c[k], ulps > 0 ? T(2) : T(-2));
+        const T e = ltc::integrate_ellipse_cosine(c, a, b);
+        const vec3 F = ltc::ellipse_vector_form_factor(c, a, b);
+        CAPTURE(sizeof(T), c, a, b, e, F);
+        CHECK(std::abs(e) <= T(1));
+        CHECK((std::abs(F.x) <= T(1) && std::abs(F.y) <= T(1) && std::abs(F.z) <= T(1)));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the origin next to both an ellipse's rim and its plane: finite, in [-1, 1] (fuzzer's NaN)",
+          "[ellipse][bad_input]") {
+    // Found by the fuzzer (float): b = c but for c.z's last bit, scaled near float's maximum.
+    // The frame puts the origin within rounding of the plane (l = 2^-24 in its units) and of the
+    // rim; a lower bound of the secular equation's root mu ~ 3e-8 rounded above it, and the
+    // Newton step from there (g ~ +epsilon, g' ~ 2) made mu negative: NaN through sqrt(mu).
+    const glm::vec3 c(-0x1.4b4b4ap+127f, -0x1.4b4b4ap+127f, -0x1.4b4b48p+127f);
+    const glm::vec3 a(-0x1.174118p+127f, 0x1.7e4dfep+127f, 0x1.fffdfep+127f);
+    const glm::vec3 b(-0x1.4b4b4ap+127f, -0x1.4b4b4ap+127f, -0x1.4b4b4ap+127f);
+    const float e = ltc::integrate_ellipse_cosine(c, a, b);
+    const glm::vec3 F = ltc::ellipse_vector_form_factor(c, a, b);
+    CAPTURE(e, F);
+    CHECK(std::abs(e) <= 1.0f);
+    CHECK((std::abs(F.x) <= 1.0f && std::abs(F.y) <= 1.0f && std::abs(F.z) <= 1.0f));
+    // The same at unit scale, in float and double (about 5% of such cases were NaN before).
+    ltc_test::rng r(0x5111);
+    check_rim_and_plane<float>(r);
+    check_rim_and_plane<double>(r);
+}

@@ -27,7 +27,9 @@
 // (tests/test_ellipse_integral.cpp; 2e5 extreme cases against a long double evaluation) within
 // ~10 epsilon of the integral's own scale, the ellipse's angular diameter (polygons' edge terms
 // carry errors of epsilon times their angles likewise), or within the integral's sensitivity to
-// rounding its inputs where that is larger (a point within ~1e-6 of a thin ellipse's plane).
+// rounding its inputs where that is larger (a point within ~1e-6 of a thin ellipse's plane; one
+// within rounding of both the plane and the rim, where any value in [-1, 1] is that close: finite,
+// in range, see make_cone_axis).
 //
 // Conventions. As polygons (ltc/core/polygon.hpp): z is the normal, and results are signed:
 // positive when the boundary c + a cos phi + b sin phi, phi increasing, turns clockwise as seen

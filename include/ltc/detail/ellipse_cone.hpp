@@ -162,12 +162,20 @@ LTC_HOST_DEVICE inline cone_axis<T> make_cone_axis(const ellipse_frame<T>& f) {
     // rounding put a bound above the root, the step from there lands below it (concavity again),
     // and the loop ends: g >= 0 or a negligible step. Measured: <= 4 steps for 98% of disks, <= 11
     // for ellipses of aspect 1e-8 seen from near their plane, beyond a tip.
+    // That step from above is floored at mu / 2: with the origin near both the ellipse's plane
+    // and its rim, g ~ mu + (X / a + Y / b - 1) - O(p / mu) and the rim term cancels, so g and
+    // the bounds carry absolute errors ~ epsilon while the root mu may be ~ epsilon itself; a
+    // bound over it by rounding then has g ~ +epsilon with g' ~ 1, and the tangent's zero could
+    // be <= 0 (a NaN from sqrt(mu) downstream; the fuzzer found it in float, and it happens in
+    // double alike). The root is in (0, mu), known to no better than that rounding, so mu / 2 is
+    // as good a value; an ordinary step (from below, or a rounding overshoot of a well-separated
+    // root) moves mu by far less than half and is unchanged.
     for (int i = 0; i < 24; ++i) {
         const T r1 = T(1) / (p + mu * a), r2 = T(1) / (p + mu * b), u1 = X * r1, u2 = Y * r2;
         const T g = mu * (T(1) + u1 + u2) - T(1);
         const T step = g / (T(1) + u1 * (p * r1) + u2 * (p * r2));  // g' = |v|^2, p r_i <= 1
         const bool done = !(g < T(0)) || !(std::abs(step) > T(2) * eps * mu);
-        mu = glm::min(mu - step, T(1));
+        mu = glm::min(glm::max(mu - step, T(0.5) * mu), T(1));
         if (done) break;
     }
     const T d1 = p + mu * a, d2 = p + mu * b;
