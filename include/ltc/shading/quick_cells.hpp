@@ -14,15 +14,17 @@
 // the number of calls is fixed, where the adaptive quadtree of textured_cells.hpp needs one per
 // level below its first.
 //
-// Each leaf contributes I_D(leaf) times a radiance: the mean of its texels, or the paper's fetch
-// (section 5.4) at the foot point clamped into the leaf, for the (at most) four leaves of largest
+// Each leaf contributes I_D(leaf) times a radiance: its texels' mean, or the paper's fetch
+// (section 5.4) at the foot point clamped into the leaf, in the (at most) two leaves of largest
 // I_D that hold at least 1/64 of the light's and are wider than about 4 sigma of the lobe (2^k
-// texels against sigma = 2^(lod - 1) texels): the lobe is sharper than the leaf there, so the
-// mean would weight its texels wrongly, most of all in a leaf that takes only the lobe's tail
-// next to its border (the render example's stained glass: a 64 x 64-texel leaf holding 3.7% of
-// I_D read at its mean put one pixel 10x too bright while the fetch was limited to leaves with a
-// quarter of I_D). The README's textured table measures it against Monte Carlo and its cost
-// against the fetch (bench_textured).
+// texels against sigma = 2^(lod - 1) texels), once some leaf holds a quarter of I_D (a lobe
+// that none does is wider than the leaves: the means serve, and the fetch's parameters, which
+// cost as much as the fetch, are skipped). The lobe is sharper than those leaves, so the mean
+// would weight their texels wrongly, most of all in a leaf that takes only the lobe's tail next
+// to its border: in the render example's stained glass, a 64 x 64-texel leaf holding 3.7% of I_D
+// next to the leaf holding the lobe put one pixel 10x too bright when only leaves with a quarter
+// of I_D took the fetch. The README's textured table measures it against Monte Carlo and its
+// cost against the fetch (bench_textured).
 //
 // Robustness: as integrate_textured_cells (corners near the largest finite value scaled by 2^-4;
 // a non-finite corner gives I_D of the quad times the texture's mean; 0 below the horizon).
@@ -110,10 +112,10 @@ inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>
         }
         if (n > first) detail::cell_integrals(d, side, geometry, cells, k + first, i + first, j + first, n - first, i_d + first, r.integrals);
     }
-    // The fetch goes to the (at most) four inexact leaves of largest I_D that hold at least
-    // 1/64 of it, where they are wider than the lobe; its parameters on demand.
-    constexpr int fetches = 4;
-    int fetch_leaf[fetches] = {-1, -1, -1, -1};
+    // The fetch goes to the (at most) two inexact leaves of largest I_D that hold at least
+    // 1/64 of it, where they are wider than the lobe.
+    constexpr int fetches = 2;
+    int fetch_leaf[fetches] = {-1, -1};
     for (int m = 0; use_fetch && m < n; ++m) {
         if (split[m] || k[m] == 0 || !(i_d[m] >= total / T(64)) || !(cells.range(k[m], i[m], j[m]) > T(0))) continue;
         int at = fetches;
@@ -124,7 +126,10 @@ inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>
     }
     textured_fetch<T> f;
     double lod = 0;
-    if (fetch_leaf[0] >= 0) f = fetch_parameters(d.inverse_matrix(), quad), lod = double(tex.lod_for_sigma(f.sigma));
+    // A lobe that no leaf holds a quarter of is wider than the leaves: no fetch (nor its
+    // parameters, as costly as the fetch itself) where the means serve.
+    if (fetch_leaf[0] >= 0 && i_d[fetch_leaf[0]] >= total / T(4))
+        f = fetch_parameters(d.inverse_matrix(), quad), lod = double(tex.lod_for_sigma(f.sigma));
     glm::dvec3 sum(0.0);
     double bound = 0;
     r.cells = 0;
@@ -133,7 +138,7 @@ inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>
         ++r.cells;
         if (k[m] > 0) bound += double(cells.range(k[m], i[m], j[m])) * double(i_d[m]);
         const bool fetch = f.valid && double(k[m]) > lod + 1 &&
-                           (m == fetch_leaf[0] || m == fetch_leaf[1] || m == fetch_leaf[2] || m == fetch_leaf[3]);
+                           (m == fetch_leaf[0] || m == fetch_leaf[1]);
         glm::dvec3 value(cells.mean(k[m], i[m], j[m]));
         if (fetch) {
             int x0, y0, x1, y1;

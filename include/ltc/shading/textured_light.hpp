@@ -13,7 +13,7 @@
 // mean of its texels (ltc/shading/textured_cells.hpp, with an error bound and a budget);
 // `quick_cells`, the real-time improvement on the fetch (ltc/shading/quick_cells.hpp): 16 exact
 // cells and up to 8 of their children in two kernel calls, each leaf its mean, or the paper's
-// fetch at the foot point clamped into it in the (at most) four leaves of largest I_D that are
+// fetch at the foot point clamped into it in the (at most) two leaves of largest I_D that are
 // wider than the lobe (the README's textured table measures all three against Monte Carlo and
 // against each other's cost).
 //
@@ -76,7 +76,7 @@
 //     missed (errors near -90%: the result is the background) or smeared over the wrong place
 //     (+150% to +330% at distance 0.5, roughness 0.25-0.5, theta_v 60-80 deg). The bias is
 //     -9.5% on average. The paper presents I_L as an approximation for this reason.
-// The cell methods: quick_cells 0.34% / 1.2% / 2.6%, 2.3% / 8.0% / 16%, 2.0% / 9.0% / 32% and
+// The cell methods: quick_cells 0.34% / 1.0% / 2.8%, 2.1% / 6.3% / 18%, 1.5% / 3.6% / 31% and
 // 2.4% / 6.7% / 9.6% on the same four; exact_cells (64 cells) at most 0.75% mean and 3.0% max on
 // every texture (the README's table).
 // Shading errors (magnitude I_D I_L against MC of int L rho cos) add the GGX fit's own error
