@@ -7,7 +7,8 @@
 //   disk     ltc::shade_disk_light, radius 0.6, one-sided; disk_2017 the same call with
 //            integrate_disk_2017 for both terms; disk_polygon_16 integrate_disk_polygon, 16 edges;
 //   sphere   ltc::shade_sphere_light, radius 0.6;
-//   tube     ltc::shade_line_light, axis 1.2 long, radius 0.05.
+//   tube     ltc::shade_line_light, axis 1.2 long, radius 0.05; tube_ribbon ltc::shade_tube_light,
+//            the same tube as its ribbon quad (the exact silhouette, a two-sided polygon).
 // time_per_item (CPU time) is the cost of one shading call (specular + diffuse); compare the
 // shapes' to the quad's within one run:
 //   ./build/benchmarks/bench_shapes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -20,6 +21,7 @@
 #include <ltc/shading/line_light.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/sphere_light.hpp>
+#include <ltc/shading/tube_light.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -145,6 +147,13 @@ void BM_tube(benchmark::State& state) {
     });
 }
 
+void BM_tube_ribbon(benchmark::State& state) {
+    run(state, [](const scene& s, const point& p) {
+        return ltc::shade_tube_light(p.P, p.N, p.V, p.roughness, s.F0, s.albedo, s.radiance, s.centre - 0.6f * s.u,
+                                     s.centre + 0.6f * s.u, 0.05f);
+    });
+}
+
 }  // namespace
 
 BENCHMARK(BM_quad);
@@ -153,5 +162,6 @@ BENCHMARK(BM_disk_2017);
 BENCHMARK(BM_disk_polygon_16);
 BENCHMARK(BM_sphere);
 BENCHMARK(BM_tube);
+BENCHMARK(BM_tube_ribbon);
 
 LTC_BENCHMARK_MAIN();

@@ -1,6 +1,6 @@
 // shape_error_report/evaluate.hpp -- per configuration: the Monte Carlo truth of the real GGX
 // (ltc/reference/shape_ground_truth.hpp), the LTC shading through shade_sphere_light /
-// shade_disk_light / shade_line_light (double, F0 = 1, albedo = radiance = 1: specular =
+// shade_disk_light / shade_line_light / shade_tube_light (double, F0 = 1, albedo = radiance = 1: specular =
 // magnitude * I_ltc, diffuse = E), the disks' 2017 approximation and equal-area polygons, and the
 // exact diffuse form factors, each computed without the code under test (main.cpp's comment).
 #pragma once
@@ -19,6 +19,7 @@
 #include <ltc/shading/line_light.hpp>
 #include <ltc/shading/sphere_form_factor.hpp>
 #include <ltc/shading/sphere_light.hpp>
+#include <ltc/shading/tube_light.hpp>
 
 #include <glm/glm.hpp>
 
@@ -102,6 +103,9 @@ inline void evaluate_ltc(config& c) {
     } else {
         r = ltc::shade_line_light(P, N, V, roughness, one, one, one, c.p0, c.p1, c.radius);
         c.diffuse_exact = line_form_factor(c);
+        const ltc::polygon_light_result<double> q = ltc::shade_tube_light(P, N, V, roughness, one, one, one, c.p0, c.p1, c.radius);
+        c.ribbon = q.specular.x;
+        c.ribbon_diffuse = q.diffuse.x;
     }
     c.ltc = r.specular.x;
     c.diffuse = r.diffuse.x;
@@ -125,6 +129,10 @@ inline void evaluate_truth(config& c, std::size_t index, std::uint64_t samples) 
         c.line = gt::integrate_line(ggx, V, alpha, c.p0, c.p1, opt);
         opt.seed += 0x10000u;
         c.tube_cosine = gt::integrate_tube(lambert{}, V, 0.0, c.p0, c.p1, c.radius, opt);
+        // The ribbon's silhouette alone: the real GGX over the quad (integrate is two-sided).
+        const ltc::tube_ribbon<double> q = ltc::make_tube_ribbon(dvec3(0), c.p0, c.p1, c.radius);
+        opt.seed += 0x10000u;
+        if (q.kind == ltc::tube_ribbon<double>::ribbon) c.ribbon_gt = gt::integrate(ggx, V, alpha, q.corner, 4, opt);
     }
 }
 

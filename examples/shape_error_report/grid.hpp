@@ -46,12 +46,14 @@ struct config {
     dvec3 p0{0}, p1{0};
     double radius = 0;
     // Results (evaluate.hpp): Monte Carlo truth of the real GGX, and per tube the thin line's
-    // (in 1/length: times 2 radius to compare) and the cylinder's Lambertian form factor.
-    ltc::ground_truth::estimate gt, line, tube_cosine;
+    // (in 1/length: times 2 radius to compare), the cylinder's Lambertian form factor, and the
+    // real GGX over the tube's ribbon quad (ltc/shading/tube_light.hpp, two-sided).
+    ltc::ground_truth::estimate gt, line, tube_cosine, ribbon_gt;
     double albedo = 0;                     // the table's magnitude
     double ltc = 0, ltc_2017 = 0;          // magnitude * I (shade_*_light, F0 = 1); the 2017 disk
     double polygon[4] = {0, 0, 0, 0};      // disk: magnitude * integrate_disk_polygon, n as above
     double diffuse = 0, diffuse_exact = 0; // E of shade_*_light; its exact value (main.cpp)
+    double ribbon = 0, ribbon_diffuse = 0; // tube: shade_tube_light's magnitude * I and E
 };
 
 inline dvec3 direction(double azimuth_deg, double elevation_deg) {

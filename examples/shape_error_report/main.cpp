@@ -3,7 +3,7 @@
 //
 //   shape_error_report [--samples 65536] [--threads K] [--list]
 //
-// Direct build (as examples/CMakeLists.txt does); the run takes about 6 s on 2 cores (12 s of CPU):
+// Direct build (as examples/CMakeLists.txt does); the run takes about 8 s on 2 cores (15 s of CPU):
 //   g++ -std=gnu++17 -O2 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Iexamples
 //       examples/shape_error_report/*.cpp -o shape_error_report -pthread   (one line)
 //
@@ -22,7 +22,10 @@
 //   tube    LTC vs tube: shade_line_light (2 r I_line) against MC of the real open cylinder;
 //           thin line: 2 r x MC of the thin line (integrate_line, the same GGX) against MC of the
 //           cylinder: the thin-line approximation alone; fit: shade_line_light against 2 r x MC of
-//           the line: the LTC fit alone (the line integral is exact)
+//           the line: the LTC fit alone (the line integral is exact); ribbon: shade_tube_light (the
+//           quad with the cylinder's exact silhouette, ltc/shading/tube_light.hpp) against MC of the
+//           cylinder; ribbon's silhouette: MC of the real GGX over that quad (ground_truth::integrate,
+//           two-sided) against MC of the cylinder: the quad's end error alone, without the fit
 // Then: how often the tube's estimate exceeds the whole lobe (2 r I_line > 1: a tube wider than the
 // lobe, where the thin-line limit fails); the 2017 approximation (sphere, disk) and the equal-area
 // n-gon for n = 8, 16, 32, 64 (disk) against the exact shape (differences of the LTC estimates, no
@@ -114,8 +117,10 @@ int main(int argc, char** argv) {
                     {{"exact (shade_disk_light)", exact_error}, {"2017 approximation", error_2017}});
     const auto line = [](const config& c) { return 2 * c.radius * c.line.mean; };
     print_breakdown(grid, tube,
-                    "3. Tube: LTC vs MC of the cylinder; thin line: 2 r MC(line) vs MC(cylinder); fit: LTC vs 2 r MC(line)",
+                    "3. Tube: LTC, ribbon vs MC of the cylinder; silhouette: MC(ribbon) vs MC(cylinder); thin line: 2 r MC(line) vs MC(cylinder); fit: LTC vs 2 r MC(line)",
                     {{"LTC vs tube", exact_error},
+                     {"ribbon", [](const config& c) { return relative(c.ribbon, c.gt.mean); }},
+                     {"ribbon's silhouette", [](const config& c) { return relative(c.ribbon_gt.mean, c.gt.mean); }},
                      {"thin line", [&](const config& c) { return relative(line(c), c.gt.mean); }},
                      {"fit (LTC vs line)", [&](const config& c) { return relative(c.ltc, line(c)); }}});
     print_tube_overshoot(grid);

@@ -105,35 +105,45 @@ void print_approximations(const std::vector<config>& grid) {
 
 void print_tube_overshoot(const std::vector<config>& grid) {
     std::size_t over = 0, total = 0;
-    double worst = 0;
+    double worst = 0, ribbon = 0;
     for (const config& c : grid)
         if (c.shape == tube) {
             ++total;
             over += c.ltc > c.albedo;
             worst = std::max(worst, c.ltc / c.albedo);
+            ribbon = std::max(ribbon, c.ribbon / c.albedo);
         }
     std::printf("Tube: 2 r I_line > 1 (the LTC estimate above the whole lobe, magnitude) in %zu of %zu configurations,\n"
-                "  up to %.2f x the magnitude: a tube wider (2 r / distance) than the lobe\n\n",
-                over, total, worst);
+                "  up to %.2f x the magnitude: a tube wider (2 r / distance) than the lobe; the ribbon (I <= 1)\n"
+                "  reaches at most %.3f x the magnitude\n\n",
+                over, total, worst, ribbon);
 }
 
 void print_diffuse_and_sanity(const std::vector<config>& grid) {
     std::printf("Diffuse: E of shade_*_light (double) against its exact value (sphere: Snyder's closed form;\n"
                 "  disk: the 4096-gon's polygon form factor; tube: 2 r times the line's closed form), relative,\n"
                 "  over every configuration with E > 0; and the tube's thin-line error for E: 2 r I_line,cos\n"
-                "  against Monte Carlo of the real cylinder's cosine\n");
+                "  against Monte Carlo of the real cylinder's cosine, and the ribbon's E (shade_tube_light) against it\n");
     for (int shape = 0; shape < shape_count; ++shape) {
-        std::vector<double> e, thin[size_count];
+        std::vector<double> e, thin[size_count], ribbon[size_count];
         for (const config& c : grid)
             if (c.shape == shape && !c.inside && c.diffuse_exact > 0) {
                 e.push_back(relative(c.diffuse, c.diffuse_exact));
-                if (shape == tube && c.tube_cosine.mean > 0) thin[c.size].push_back(relative(c.diffuse, c.tube_cosine.mean));
+                if (shape == tube && c.tube_cosine.mean > 0) {
+                    thin[c.size].push_back(relative(c.diffuse, c.tube_cosine.mean));
+                    ribbon[c.size].push_back(relative(c.ribbon_diffuse, c.tube_cosine.mean));
+                }
             }
         print_stats_line(shape_names[shape], e);
         if (shape == tube)
             for (int s = 0; s < size_count; ++s) {
                 const std::string label = std::string("  tube vs cylinder MC, size ") + size_names[s];
                 print_stats_line(label.c_str(), thin[s]);
+            }
+        if (shape == tube)
+            for (int s = 0; s < size_count; ++s) {
+                const std::string label = std::string("  ribbon vs cylinder MC, size ") + size_names[s];
+                print_stats_line(label.c_str(), ribbon[s]);
             }
     }
     std::vector<double> spec, diff, noise;
@@ -152,7 +162,8 @@ void print_diffuse_and_sanity(const std::vector<config>& grid) {
 
 void print_list(const std::vector<config>& grid) {
     std::printf("Every configuration: truth +- standard error, LTC's relative error (sphere, disk: the 2017's; tube:\n"
-                "  2 r x MC of the line +- standard error, and the LTC's error against it); * partly below the\n"
+                "  2 r x MC of the line +- standard error, and the LTC's error against it; shade_tube_light's and\n"
+                "  MC(ribbon)'s error against MC(cylinder), and MC(ribbon)'s relative standard error); * partly below the\n"
                 "  horizon, - not significant\n");
     for (const config& c : grid) {
         std::printf("  %-6s th %2.0f r %.2f %-6s %-13s%s%s GT %.4e +- %.1e LTC %+8.2f%%", shape_names[c.shape],
@@ -165,6 +176,10 @@ void print_list(const std::vector<config>& grid) {
         if (c.shape == tube)
             std::printf(" line %.4e +- %.1e fit %+.2f%%", 2 * c.radius * c.line.mean, 2 * c.radius * c.line.standard_error,
                         c.line.mean > 0 ? 100 * (c.ltc / (2 * c.radius * c.line.mean) - 1) : 0.0);
+        if (c.shape == tube)
+            std::printf(" ribbon %+.2f%% silhouette %+.2f%% +- %.2f%%", c.gt.mean > 0 ? 100 * (c.ribbon / c.gt.mean - 1) : 0.0,
+                        c.gt.mean > 0 ? 100 * (c.ribbon_gt.mean / c.gt.mean - 1) : 0.0,
+                        c.ribbon_gt.mean > 0 ? 100 * c.ribbon_gt.standard_error / c.ribbon_gt.mean : 0.0);
         std::printf("\n");
     }
 }

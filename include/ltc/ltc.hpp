@@ -41,6 +41,7 @@
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/sphere_light.hpp>
 #include <ltc/shading/line_light.hpp>
+#include <ltc/shading/tube_light.hpp>
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_shading.hpp>
 
