@@ -1,5 +1,5 @@
 // The fuzz harness's checks of the line, disk and sphere lights (ltc/core/line_integral.hpp,
-// ltc/core/ellipse_integral.hpp, ltc/shading/{line,disk,sphere}_light.hpp), called by
+// ltc/core/ellipse_integral.hpp, ltc/shading/{line,tube,disk,sphere}_light.hpp), called by
 // tests/fuzz/fuzz_integrals.cpp for every input.
 //
 // Input: the harness's fuzzed M^-1 and its first two polygon vertices (the segment, the disk's
@@ -12,7 +12,8 @@
 //     ellipse_vector_form_factor: finite, within [-1, 1];
 //   - integrate_disk, integrate_disk_2017 and integrate_disk_polygon (8 edges): finite, >= 0
 //     after sidedness, at most 1 (plus rounding);
-//   - shade_line_light, shade_disk_light, shade_sphere_light: finite, >= 0 per channel.
+//   - shade_line_light, shade_tube_light, shade_disk_light, shade_sphere_light: finite, >= 0 per
+//     channel.
 #pragma once
 
 #include "fuzz_common.hpp"
@@ -22,6 +23,7 @@
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/line_light.hpp>
 #include <ltc/shading/sphere_light.hpp>
+#include <ltc/shading/tube_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -76,6 +78,9 @@ void check_shapes(FuzzedDataProvider& in, const glm::mat<3, 3, T>& m, const std:
     const auto line_light = ltc::shade_line_light(P, N, V, roughness, F0, albedo, radiance, a, b, radius);
     require_non_negative(line_light.specular, "tube specular");
     require_non_negative(line_light.diffuse, "tube diffuse");
+    const auto tube = ltc::shade_tube_light(P, N, V, roughness, F0, albedo, radiance, a, b, radius);
+    require_non_negative(tube.specular, "tube (ribbon) specular");
+    require_non_negative(tube.diffuse, "tube (ribbon) diffuse");
     const auto disk = ltc::shade_disk_light(P, N, V, roughness, F0, albedo, radiance, a, b, radius, side);
     require_non_negative(disk.specular, "disk specular");
     require_non_negative(disk.diffuse, "disk diffuse");
