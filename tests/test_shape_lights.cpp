@@ -16,6 +16,7 @@
 #include <ltc/shading/sphere_light.hpp>
 
 #include "support/rng.hpp"
+#include "support/shading_scene.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
@@ -36,19 +37,8 @@ constexpr auto one_sided = ltc::sidedness::one_sided;
 template <typename T> double unit_roundoff() { return std::numeric_limits<T>::epsilon() / 2; }
 /// A random shading point: P in [-1, 1]^3, unit N, V at cos_theta_v from N, and the frame (t1, t2, N)
 /// of local coordinates (t1 along V's tangential part, as ltc::make_shading_frame's).
-struct scene {
-    dvec3 P, N, V, t1, t2;
-    dvec3 direction(const dvec3& l) const { return l.x * t1 + l.y * t2 + l.z * N; }
-    dvec3 world(const dvec3& l) const { return P + direction(l); }
-};
-
-scene random_scene(ltc_test::rng& r, double cos_theta_v) {
-    scene s;
-    for (int k = 0; k < 3; ++k) s.P[k] = r.uniform(-1, 1);
-    s.N = r.direction(), s.t1 = ltc::orthonormal_tangent(s.N), s.t2 = glm::cross(s.N, s.t1);
-    s.V = s.direction(dvec3(std::sqrt(1 - cos_theta_v * cos_theta_v), 0, cos_theta_v));
-    return s;
-}
+using scene = ltc_test::shading_scene;
+inline scene random_scene(ltc_test::rng& r, double cos_theta_v) { return ltc_test::random_shading_scene(r, cos_theta_v); }
 
 dvec3 polar(double th, double phi) {
     return {std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "grid.hpp"
+#include "common/error_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,25 +14,8 @@
 
 namespace shape_error_report {
 
-struct stats {
-    double mean = 0, p95 = 0, max = 0;
-    std::size_t count = 0;
-};
-
-inline stats summarize(std::vector<double> e) {
-    stats s;
-    s.count = e.size();
-    if (e.empty()) return s;
-    std::sort(e.begin(), e.end());
-    double sum = 0;
-    for (double x : e) sum += x;
-    s.mean = sum / double(e.size());
-    // 95th percentile: the smallest value with at least 95% of the sample at or below it.
-    const std::size_t k = std::size_t(std::ceil(0.95 * double(e.size())));
-    s.p95 = e[std::min(e.size() - 1, k > 0 ? k - 1 : 0)];
-    s.max = e.back();
-    return s;
-}
+using ltc_examples::stats;
+using ltc_examples::summarize;
 
 /// In the statistics: a grid configuration (not a sanity line) whose truth is at least 1e-3 of the
 /// directional albedo (the others are invisible next to any light that faces the lobe).

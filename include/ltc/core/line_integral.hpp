@@ -70,14 +70,6 @@ namespace ltc {
 
 namespace detail {
 
-/// The largest finite T (CUDA-safe, as min_normal).
-template <typename T>
-LTC_HOST_DEVICE constexpr T largest_finite() {
-    if constexpr (std::is_same_v<T, float>) return FLT_MAX;
-    else if constexpr (std::is_same_v<T, double>) return DBL_MAX;
-    else return std::numeric_limits<T>::max();
-}
-
 /// x clamped to [0, largest finite] (NaN, which finite input never produces, to 0).
 template <typename T>
 LTC_HOST_DEVICE LTC_INLINE T saturate_line(T x) {

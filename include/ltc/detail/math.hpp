@@ -31,6 +31,13 @@ LTC_HOST_DEVICE constexpr T min_normal() {
     else if constexpr (std::is_same_v<T, double>) return DBL_MIN;
     else return std::numeric_limits<T>::min();
 }
+/// The largest finite T (CUDA-safe, as min_normal).
+template <typename T>
+LTC_HOST_DEVICE constexpr T largest_finite() {
+    if constexpr (std::is_same_v<T, float>) return FLT_MAX;
+    else if constexpr (std::is_same_v<T, double>) return DBL_MAX;
+    else return std::numeric_limits<T>::max();
+}
 template <typename T>
 LTC_HOST_DEVICE constexpr T epsilon() {
     if constexpr (std::is_same_v<T, float>) return FLT_EPSILON;

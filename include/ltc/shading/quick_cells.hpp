@@ -57,13 +57,7 @@ inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>
     const int top = cells.level_count() - 1;
     cells_result<T> r;
     vec3 q[4];
-    if (!detail::cell_corners(quad, q)) {
-        const T i_d = detail::quad_integral_or_zero(d, quad, side);
-        r.value = vec3(double(i_d) * glm::dvec3(cells.mean(top, 0, 0)));
-        r.error_bound = cells.range(top, 0, 0) * i_d;
-        r.cells = 1, r.integrals = 1;
-        return r;
-    }
+    if (!detail::cell_corners(quad, q)) return detail::whole_quad_result(d, quad, cells, side);
     const detail::cell_geometry<T> geometry = detail::make_cell_geometry(q, cells);
     // The leaves: the base cells, then the children of those split (split[m]: not a leaf).
     constexpr int most = 16 + 8;

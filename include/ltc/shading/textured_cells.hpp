@@ -65,6 +65,23 @@ struct cells_result {
     std::size_t integrals = 0;   ///< polygon integrals evaluated
 };
 
+namespace detail {
+
+/// Where cell_corners fails (a non-finite corner): no cell geometry. Like the fetch, whose
+/// parameters are then invalid: I_D of the quad (0 if NaN) times the texture's mean, one cell.
+template <typename T>
+inline cells_result<T> whole_quad_result(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
+                                         const cell_pyramid<T>& cells, sidedness side) {
+    cells_result<T> r;
+    const int top = cells.level_count() - 1;
+    const T i_d = quad_integral_or_zero(d, quad, side);
+    r.value = glm::vec<3, T>(double(i_d) * glm::dvec3(cells.mean(top, 0, 0)));
+    r.error_bound = cells.range(top, 0, 0) * i_d;
+    r.cells = 1, r.integrals = 1;
+    return r;
+}
+
+}  // namespace detail
 
 /// integrate_textured_cells with the radiance of the leaves that remain inexact (range > 0,
 /// above level 0) given by open_value(k, i, j) -> glm::dvec3 instead of their mean (e.g. a
@@ -78,14 +95,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     using leaf = detail::cell_leaf<T>;
     cells_result<T> r;
     vec3 q[4];
-    if (!detail::cell_corners(quad, q)) {
-        const int top = cells.level_count() - 1;
-        const T i_d = detail::quad_integral_or_zero(d, quad, side);
-        r.value = vec3(double(i_d) * glm::dvec3(cells.mean(top, 0, 0)));
-        r.error_bound = cells.range(top, 0, 0) * i_d;
-        r.cells = 1, r.integrals = 1;
-        return r;
-    }
+    if (!detail::cell_corners(quad, q)) return detail::whole_quad_result(d, quad, cells, side);
     const detail::cell_geometry<T> geometry = detail::make_cell_geometry(q, cells);
     const auto bound_of = [&](int k, int i, int j, T i_d) { return k == 0 ? T(0) : cells.range(k, i, j) * i_d; };
     const auto contribution = [&](int k, int i, int j, T i_d) { return double(i_d) * glm::dvec3(cells.mean(k, i, j)); };
