@@ -2,7 +2,7 @@
 //
 //   render [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]
 //          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]
-//          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--help]
+//          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--shapes] [--help]
 //
 // The scene (z up): a tiled ground plane seen by a pinhole camera 2.8 units above it, lit by two
 // one-sided, constant-radiance polygonal lights standing behind the floor, facing the camera and
@@ -119,6 +119,8 @@
 // three. The other lines are fetch's. With all, or one method other than fetch, the LTC time
 // and the headings name the method of ltc.png ("textured light by exact_cells (64 cells)"); the
 // default run's lines are as they were before --textured-method.
+// --shapes (shapes.hpp, shapes_render.hpp): after the rest, unchanged, a disk, a sphere and a tube
+// light alone on the floor: shapes_ltc.png, shapes_reference.png, shapes_error.png, statistics.
 // Exit status 0, or 1 if an image could not be written or read or a value was not finite, 2
 // for bad arguments. A progress bar with an ETA for the reference render goes to stderr.
 //
@@ -145,6 +147,7 @@
 #include "reference_render.hpp"
 #include "report.hpp"
 #include "scene.hpp"
+#include "shapes_render.hpp"
 #include "stained_glass.hpp"
 #include "textured_methods.hpp"
 #include "threads.hpp"
@@ -245,6 +248,7 @@ int main(int argc, char** argv) {
 
     if (opt.spp == 0) {
         std::printf("non-finite values: LTC %zu\n", ltc_nonfinite);
+        if (opt.shapes) ok = run_shapes(s, hits, floor_pixels, opt, out_dir) && ok;
         return ok && ltc_nonfinite == 0 ? 0 : 1;
     }
 
@@ -257,5 +261,6 @@ int main(int argc, char** argv) {
     // Error images and statistics.
     ok = report_errors(s, hits, ltc_poly, ltc_img, runs, ref, note, floor_pixels, opt, out_dir, rgb) && ok;
     std::printf("non-finite values: LTC %zu, reference %zu\n", ltc_nonfinite, ref.nonfinite);
+    if (opt.shapes) ok = run_shapes(s, hits, floor_pixels, opt, out_dir) && ok;
     return ok && ltc_nonfinite == 0 && ref.nonfinite == 0 ? 0 : 1;
 }

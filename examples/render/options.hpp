@@ -37,13 +37,14 @@ struct options {
     // light with; one, or all three (fetch, quick_cells, exact_cells) with --textured-method all.
     std::vector<ltc::textured_method> textured_methods{ltc::textured_method::fetch};
     std::size_t cells = 64;  // --cells: exact_cells' budget (ltc::cell_budget::max_cells)
+    bool shapes = false;     // --shapes: the disk, sphere and tube lights' section (shapes_render.hpp)
 };
 
 inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]\n"
         "          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]\n"
-        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--help]\n"
+        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--shapes] [--help]\n"
         "\n"
         "Renders a tiled floor (GGX dielectric, gold and copper; roughness 0.1 .. 0.9) lit by a\n"
         "rotated rectangular light, a pentagonal light and, between them, a textured quad light (a\n"
@@ -105,6 +106,10 @@ inline void print_help(const char* argv0) {
         "                     all          the three, each timed and measured against the same\n"
         "                                  reference (computed once)\n"
         "  --cells N        exact_cells' budget: adaptive cells at most (default 64; at least 1)\n"
+        "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"
+        "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
+        "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"
+        "                   shapes_reference.png, shapes_error.png and their statistics, printed last\n"
         "  --help           this text\n"
         "\n"
         "Floor: stripes dielectric | gold | dielectric | copper (left to right), crossed by bands of\n"
@@ -127,6 +132,10 @@ inline int parse_args(int argc, char** argv, options& o) {
         if (a == "--help" || a == "-h") {
             print_help(argv[0]);
             return 1;
+        }
+        if (a == "--shapes") {
+            o.shapes = true;
+            continue;
         }
         if (a == "--no-texture") {
             o.textured = false;
