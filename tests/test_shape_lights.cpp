@@ -180,7 +180,7 @@ TEMPLATE_TEST_CASE("shape lights: degenerate input gives finite results", "[shap
         CHECK((zero(sphere(P, N, V, C, rad)) && zero(disk(P, N, V, C, down, rad)) &&
                zero(tube(P, N, V, a, b, rad))));
     CHECK(zero(sphere(P, N, V, C, inf)));
-    for (const v3 bad : {v3(nan, 0, 1), v3(inf, 0, 1), v3(0, -inf, nan)}) {  // non-finite positions
+    for (const v3 bad : {v3(nan, 0, 1), v3(0, nan, 1), v3(0, 0, nan), v3(inf, 0, 1), v3(0, -inf, nan)}) {  // non-finite
         CHECK((zero(sphere(P, N, V, bad, 1)) && finite(sphere(bad, N, V, C, 1))));
         CHECK((finite(disk(P, N, V, bad, down, 1)) && finite(disk(P, N, V, C, bad, 1)) &&
                finite(disk(bad, N, V, C, down, 1))));

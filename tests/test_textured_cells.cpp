@@ -218,8 +218,9 @@ TEST_CASE("textured policies: fetch, quick_cells and exact_cells (textured_light
                 CHECK(quad(d, q, tex_h, side, textured_method::exact_cells, 2000) == h16.value);
                 // quick_cells: integrate_quick_cells whatever the policy's budget says; on the
                 // halves every base cell is constant (bound 0, nothing split), so it is h16 up to
-                // the order of the sums: h16 adds the base cells' float I_D four at a time (3u
-                // each, all positive) before its double products, quick_cells none.
+                // the order of the sums: h16 adds the base cells' float I_D four at a time (three
+                // roundings of positive terms: gamma_3 < 3.01u relative) before its double
+                // products, quick_cells none; the double products and sums add < 0.01u.
                 const auto quick = ltc::integrate_quick_cells(d, q, tex_h, side);
                 CHECK(quick.error_bound == 0.0f);
                 for (int k = 0; k < 3; ++k) CHECK(std::abs(quick.value[k] - h16.value[k]) <= 4 * u * h16.value[k]);

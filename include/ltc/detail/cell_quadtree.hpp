@@ -60,15 +60,6 @@ inline cell_geometry<T> make_cell_geometry(const glm::vec<3, T> (&q)[4], const c
     return {q[0], q[1] - q[0], q[3] - q[0], T(1) / T(cells.width()), T(1) / T(cells.height())};
 }
 
-/// I_D of the whole quad where cell_corners fails: like the fetch, whose parameters are then
-/// invalid, the cell methods give it times the texture's mean; NaN from the non-finite corner
-/// gives 0 (as the fetch).
-template <typename T>
-inline T quad_integral_or_zero(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4], sidedness side) {
-    const T i_d = d.integrate(quad, 4, side);
-    return i_d > T(0) ? i_d : T(0);
-}
-
 /// The instruction set cell_integrals runs and its lanes: the narrowest with at least 8 lanes
 /// that the CPU runs (the widest available otherwise); double: one cell at a time.
 template <typename T>
@@ -144,7 +135,8 @@ class open_leaves {
     std::size_t size() const { return count_; }
     const cell_leaf<T>& operator[](std::size_t m) const { return data_[m]; }
     /// Field by field: a leaf just computed and copied whole would be read back in one wide load
-    /// from narrow stores (a store-forwarding stall, 30% of quick_cells' time when measured).
+    /// from narrow stores (a store-forwarding stall: 30% of the 16-leaf quadtree's time, measured
+    /// with perf).
     void push(T bound, T i_d, int k, int i, int j) {
         cell_leaf<T>& l = data_[count_++];
         l.bound = bound, l.i_d = i_d, l.k = k, l.i = i, l.j = j;

@@ -44,8 +44,8 @@ inline polygon_light_result<T> shade_disk_light(const shading_frame<T>& frame, c
     const glm::vec<3, T> c = frame.to_local(centre - P), n = frame.to_local(normal);
     const auto spec = transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv);
     const auto cosine = transformed<clamped_cosine<T>>::from_inverse(glm::mat<3, 3, T>(T(1)));
-    const glm::vec<3, T> brdf_scale = F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel;
-    r.specular = radiance * brdf_scale * integrate_disk(spec, c, n, radius, side);
+    const glm::vec<3, T> specular_scale = brdf_scale(F0, lobe);
+    r.specular = radiance * specular_scale * integrate_disk(spec, c, n, radius, side);
     r.diffuse = albedo * radiance * integrate_disk(cosine, c, n, radius, side);
     return r;
 }

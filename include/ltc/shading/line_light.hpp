@@ -41,7 +41,7 @@ inline polygon_light_result<T> shade_line_light(const shading_frame<T>& frame, c
     if (!frame.valid || !(radius > T(0)) || !(radius <= std::numeric_limits<T>::max())) return r;
     const glm::vec<3, T> a = frame.to_local(p0 - P), b = frame.to_local(p1 - P);
     const auto spec = transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv);
-    const glm::vec<3, T> brdf_scale = F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel;
+    const glm::vec<3, T> specular_scale = brdf_scale(F0, lobe);
     // 2 r I, saturated at the largest finite value (a huge r times I; 0 times an infinite 2r
     // would be NaN).
     const auto width = [&](T i) {
@@ -49,7 +49,7 @@ inline polygon_light_result<T> shade_line_light(const shading_frame<T>& frame, c
         const T w = radius * i;
         return w < std::numeric_limits<T>::max() / T(2) ? T(2) * w : std::numeric_limits<T>::max();
     };
-    r.specular = radiance * brdf_scale * width(integrate_line(spec, a, b));
+    r.specular = radiance * specular_scale * width(integrate_line(spec, a, b));
     r.diffuse = albedo * radiance * width(integrate_line_cosine(a, b));
     return r;
 }

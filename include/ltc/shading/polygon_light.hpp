@@ -76,8 +76,8 @@ LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
     horizon_clipping clip = horizon_clipping::ltc_space) {
     const polygon_light_integrals<T> I = integrate_polygon_light<Policy>(frame, lobe.m_inv, P, vertices, n, clip);
     polygon_light_result<T> r;
-    const glm::vec<3, T> brdf_scale = F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel;
-    r.specular = radiance * brdf_scale * apply_sidedness(I.ltc, side);
+    const glm::vec<3, T> specular_scale = brdf_scale(F0, lobe);
+    r.specular = radiance * specular_scale * apply_sidedness(I.ltc, side);
     r.diffuse = albedo * radiance * apply_sidedness(I.form_factor, side);
     return r;
 }

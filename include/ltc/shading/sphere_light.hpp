@@ -49,8 +49,9 @@ inline sphere_view<T> view_sphere(const glm::vec<3, T>& P, const glm::vec<3, T>&
     const glm::vec<3, T> to_centre = centre - P;
     // Scaled by the largest coordinate first, so that |to_centre| cannot overflow.
     const T big = std::max(std::abs(to_centre.x), std::max(std::abs(to_centre.y), std::abs(to_centre.z)));
-    if (!(radius > T(0)) || !(radius <= std::numeric_limits<T>::max()) || !(big <= std::numeric_limits<T>::max()))
-        return s;
+    // Each coordinate tested: std::max drops a NaN in its second argument.
+    const bool finite = std::isfinite(to_centre.x) && std::isfinite(to_centre.y) && std::isfinite(to_centre.z);
+    if (!finite || !(radius > T(0)) || !(radius <= std::numeric_limits<T>::max())) return s;
     const T d = big > T(0) ? big * glm::length(to_centre / big) : T(0);
     if (!(d > radius)) {
         s.kind = sphere_view<T>::inside;
@@ -77,7 +78,7 @@ inline polygon_light_result<T> shade_sphere_light(const shading_frame<T>& frame,
         return shade_disk_light(frame, lobe, P, F0, albedo, radiance, view.centre, view.normal, view.radius,
                                 sidedness::one_sided);
     // Inside or on the sphere: every direction (D and the clamped cosine integrate to 1).
-    r.specular = radiance * (F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel);
+    r.specular = radiance * brdf_scale(F0, lobe);
     r.diffuse = albedo * radiance;
     return r;
 }

@@ -54,6 +54,13 @@ struct ltc_coefficients {
     T fresnel{0};
 };
 
+/// The specular colour's factor on the LTC's integral (Hill 2016's Fresnel split):
+/// F0 magnitude + (1 - F0) fresnel.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> brdf_scale(const glm::vec<3, T>& F0, const ltc_coefficients<T>& c) {
+    return F0 * c.magnitude + (glm::vec<3, T>(T(1)) - F0) * c.fresnel;
+}
+
 /// Channel indices of a table node (see the file comment).
 namespace channel {
 inline constexpr int m_inv_00 = 0;  ///< m_inv[0][0]

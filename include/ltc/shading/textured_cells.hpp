@@ -74,7 +74,8 @@ inline cells_result<T> whole_quad_result(const transformed<clamped_cosine<T>>& d
                                          const cell_pyramid<T>& cells, sidedness side) {
     cells_result<T> r;
     const int top = cells.level_count() - 1;
-    const T i_d = quad_integral_or_zero(d, quad, side);
+    T i_d = d.integrate(quad, 4, side);
+    if (!(i_d > T(0))) i_d = T(0);  // NaN from the non-finite corner: nothing (as the fetch)
     r.value = glm::vec<3, T>(double(i_d) * glm::dvec3(cells.mean(top, 0, 0)));
     r.error_bound = cells.range(top, 0, 0) * i_d;
     r.cells = 1, r.integrals = 1;

@@ -175,8 +175,8 @@ inline textured_light_result<T> shade_textured_quad_light(const glm::vec<3, T>& 
     const ltc_coefficients<T> c = ggx::fetch<T>(frame.cos_theta_v, roughness);
     const auto spec_lobe = transformed<clamped_cosine<T>>::from_inverse(c.m_inv);
     const auto cosine = transformed<clamped_cosine<T>>::from_inverse(glm::mat<3, 3, T>(T(1)));
-    const glm::vec<3, T> brdf_scale = F0 * c.magnitude + (glm::vec<3, T>(T(1)) - F0) * c.fresnel;
-    r.specular = brdf_scale * integrate_textured_quad(spec_lobe, local, tex, side, policy);
+    const glm::vec<3, T> specular_scale = brdf_scale(F0, c);
+    r.specular = specular_scale * integrate_textured_quad(spec_lobe, local, tex, side, policy);
     r.diffuse = albedo * integrate_textured_quad(cosine, local, tex, side, policy);
     return r;
 }

@@ -155,8 +155,8 @@ inline polygon_light_result<T> shade_tube_light(const shading_frame<T>& frame, c
         const T w = q.along < T(0) ? i0 - i1 : q.along > q.length ? i1 - i0 : T(1) - i0 - i1;
         return std::min(T(1), std::max(T(0), w));
     };
-    const glm::vec<3, T> brdf_scale = F0 * lobe.magnitude + (glm::vec<3, T>(T(1)) - F0) * lobe.fresnel;
-    r.specular = radiance * brdf_scale * wall(spec);
+    const glm::vec<3, T> specular_scale = brdf_scale(F0, lobe);
+    r.specular = radiance * specular_scale * wall(spec);
     r.diffuse = albedo * radiance * wall(cosine);
     return r;
 }
