@@ -1,0 +1,93 @@
+// ltc/core/ltc_polygon_sampling.hpp -- sampling a Linearly Transformed Cosine restricted to a
+// polygon: directions w in P with density D(w) / I_D, I_D = int_P D (eq. 3). Exact, through the
+// projected solid angle sampler (ltc/core/projected_solid_angle_sampling.hpp) in the cosine's
+// space:
+//   w_o ~ max(0, w_o.z) / E over M^-1 P (clipped),   E = pi I_D;
+//   w = M w_o / |M w_o|,   density (w_o.z / E) |M^-1| / |M^-1 w|^3 = D(w) pi / E = D(w) / I_D
+// (eq. 1 and its Jacobian, paper appendix A). With the polygon's integral known in closed form,
+// an estimate sum f / p over these samples of any f close to D has variance close to zero:
+// the stochastic part of the ratio estimator (ltc/shading/shadowed_polygon_light.hpp).
+//
+//   ltc::ltc_polygon_sampler<float> s(d, vertices, n);   // d: transformed<clamped_cosine<float>>
+//   ltc::polygon_sample<float> x = s.sample(u);           // x.pdf = d.eval(x.direction) / s.integral()
+//
+// The polygon: convex and planar, at most MaxVertices vertices (see the projected sampler for
+// the degenerate cases, which give an empty() sampler).
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/core/clamped_cosine.hpp>
+#include <ltc/core/projected_solid_angle_sampling.hpp>
+#include <ltc/core/transformed.hpp>
+#include <ltc/detail/math.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+
+namespace ltc {
+
+/// D restricted to a convex polygon, for D = transformed<clamped_cosine<T, Policy>> (file comment).
+template <typename T, std::size_t MaxVertices = 8>
+class ltc_polygon_sampler {
+  public:
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+    using mat3 = glm::mat<3, 3, T>;
+
+    LTC_HOST_DEVICE ltc_polygon_sampler() = default;
+
+    /// vertices[0..n) in D's frame (the shading frame for the GGX table's lobes).
+    template <typename Policy>
+    LTC_HOST_DEVICE ltc_polygon_sampler(const transformed<clamped_cosine<T, Policy>>& d, const vec3* vertices,
+                                        std::size_t n)
+        : m_inv_(d.inverse_matrix()), m_(d.matrix()), abs_det_inv_(std::abs(d.inverse_determinant())) {
+        if (n > MaxVertices) return;
+        vec3 local[MaxVertices];
+        const detail::transformed_vertices<T> to_cosine{m_inv_, vertices};
+        for (std::size_t i = 0; i < n; ++i) local[i] = to_cosine(i);
+        cosine_ = projected_polygon_sampler<T, MaxVertices>(local, n);
+    }
+
+    LTC_HOST_DEVICE bool empty() const { return cosine_.empty(); }
+
+    /// I_D: the integral of D over the polygon (the clamped cosine's over M^-1 P, clipped).
+    LTC_HOST_DEVICE T integral() const { return cosine_.projected_solid_angle() / pi<T>(); }
+
+    /// A direction with density D(w) / I_D in the polygon, and that density.
+    LTC_HOST_DEVICE polygon_sample<T> sample(const vec2& u) const {
+        int evaluations = 0;
+        return sample(u, evaluations);
+    }
+
+    LTC_HOST_DEVICE polygon_sample<T> sample(const vec2& u, int& evaluations) const {
+        polygon_sample<T> x = cosine_.sample(u, evaluations);
+        if (empty()) return x;  // pdf 0
+        const vec3 w = detail::safe_normalize(m_ * x.direction);
+        x.pdf *= jacobian(w);
+        x.direction = w;
+        return x;
+    }
+
+    /// Density of sample() at the unit direction w: D(w) / I_D inside the polygon, else 0.
+    LTC_HOST_DEVICE T pdf(const vec3& w) const {
+        const vec3 q = m_inv_ * w;
+        return cosine_.pdf(detail::safe_normalize(q)) * jacobian(w);
+    }
+
+    /// u with sample(u).direction == w (up to rounding), for w in the polygon.
+    LTC_HOST_DEVICE vec2 invert(const vec3& w) const { return cosine_.invert(detail::safe_normalize(m_inv_ * w)); }
+
+  private:
+    // |M^-1| / |M^-1 w|^3 (transformed<>::jacobian).
+    LTC_HOST_DEVICE T jacobian(const vec3& w) const {
+        const T l = glm::length(m_inv_ * w);
+        return l > T(0) ? abs_det_inv_ / (l * l * l) : T(0);
+    }
+
+    mat3 m_inv_{T(1)}, m_{T(1)};
+    T abs_det_inv_{1};
+    projected_polygon_sampler<T, MaxVertices> cosine_;
+};
+
+}  // namespace ltc
