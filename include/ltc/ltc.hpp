@@ -6,8 +6,10 @@
 //
 //   ltc/core/       the paper's mathematics: the original distributions, transformed<>, the
 //                   polygon machinery (horizon clipping, edge terms, form factors, solid angles),
-//                   and the integrals over lines and ellipses (disks);
-//   ltc/shading/    what a renderer shades with: polygonal, textured, disk, sphere and tube lights, the GGX table
+//                   the integrals over lines and ellipses (disks), and the samplers of polygons
+//                   (solid angle, projected solid angle, an LTC restricted to a polygon, area);
+//   ltc/shading/    what a renderer shades with: polygonal (also shadowed: the ratio estimator),
+//                   textured, disk, sphere and tube lights, the GGX table
 //                   fetch, the clipless approximation, structure-of-arrays batches;
 //   ltc/fitting/    offline: BRDF models and the fitter that makes the tables;
 //   ltc/reference/  Monte Carlo ground truth, to validate the approximations (and a renderer);
@@ -27,6 +29,9 @@
 #include <ltc/core/transformed.hpp>
 #include <ltc/core/line_integral.hpp>
 #include <ltc/core/ellipse_integral.hpp>
+#include <ltc/core/projected_solid_angle_sampling.hpp>
+#include <ltc/core/ltc_polygon_sampling.hpp>
+#include <ltc/core/polygon_area_sampling.hpp>
 
 #include <ltc/shading/table.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
@@ -44,6 +49,7 @@
 #include <ltc/shading/tube_light.hpp>
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/shadowed_polygon_light.hpp>
 
 #include <ltc/fitting/brdf/model.hpp>
 #include <ltc/fitting/brdf/ggx.hpp>

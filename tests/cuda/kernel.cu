@@ -12,3 +12,19 @@ __global__ void integrate_quads(const glm::vec3* quads, const glm::mat3* m_inv, 
              ltc::squared_clamped_cosine<float>::integrate(q, 4) + d.eval(glm::normalize(q[0])) +
              d.sample(glm::vec2(0.25f, 0.5f)).z + ltc::vector_form_factor(q, 4).z;
 }
+
+// The samplers of polygonal lights (issue 15), one sample each, with their pdf and inversion.
+__global__ void sample_quads(const glm::vec3* quads, const glm::mat3* m_inv, glm::vec4* out, int count) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= count) return;
+    const glm::vec3* q = quads + 4 * i;
+    const glm::vec2 u(0.25f, 0.5f);
+    const ltc::projected_polygon_sampler<float> cosine(q, 4);
+    const ltc::ltc_polygon_sampler<float> lobe(ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(m_inv[i]), q, 4);
+    const ltc::polygon_area_sampler<float> area(q, 4);
+    const ltc::polygon_sample<float> a = cosine.sample(u), b = lobe.sample(u);
+    const glm::vec3 x = area.sample(u);
+    out[i] = glm::vec4(a.direction + b.direction + x, a.pdf + b.pdf + cosine.pdf(a.direction) + lobe.pdf(b.direction) +
+                                                          cosine.invert(a.direction).x + lobe.invert(b.direction).y +
+                                                          area.solid_angle_pdf(glm::vec3(0.0f), x));
+}
