@@ -87,11 +87,10 @@ std::vector<glm::vec<3, T>> local_quad(const config& c) {
     return {glm::vec<3, T>(c.local[0]), glm::vec<3, T>(c.local[1]), glm::vec<3, T>(c.local[2]), glm::vec<3, T>(c.local[3])};
 }
 
-template <typename T>
-void projected(benchmark::State& state) {
+// Samples kSamplesPerItem directions from each configuration's sampler.
+template <typename T, typename Sampler>
+void sample_all(benchmark::State& state, const std::vector<Sampler>& samplers) {
     const scene& s = the_scene();
-    std::vector<ltc::projected_polygon_sampler<T>> samplers;
-    for (const config& c : s.items) samplers.emplace_back(local_quad<T>(c).data(), 4);
     int evaluations = 0;
     std::size_t samples = 0;
     for (auto _ : state)
@@ -105,22 +104,19 @@ void projected(benchmark::State& state) {
 }
 
 template <typename T>
+void projected(benchmark::State& state) {
+    std::vector<ltc::projected_polygon_sampler<T>> samplers;
+    for (const config& c : the_scene().items) samplers.emplace_back(local_quad<T>(c).data(), 4);
+    sample_all<T>(state, samplers);
+}
+
+template <typename T>
 void ltc_polygon(benchmark::State& state) {
-    const scene& s = the_scene();
     std::vector<ltc::ltc_polygon_sampler<T>> samplers;
-    for (const config& c : s.items)
+    for (const config& c : the_scene().items)
         samplers.emplace_back(ltc::transformed<ltc::clamped_cosine<T>>::from_inverse(glm::mat<3, 3, T>(c.m_inv)),
                               local_quad<T>(c).data(), 4);
-    int evaluations = 0;
-    std::size_t samples = 0;
-    for (auto _ : state)
-        for (const auto& sm : samplers)
-            for (const glm::vec2& u : s.u) {
-                benchmark::DoNotOptimize(sm.sample(glm::vec<2, T>(u), evaluations));
-                ++samples;
-            }
-    state.SetItemsProcessed(static_cast<std::int64_t>(samples));
-    state.counters["evals"] = double(evaluations) / double(samples);
+    sample_all<T>(state, samplers);
 }
 
 template <typename T>
