@@ -191,7 +191,7 @@ BENCHMARK_TEMPLATE(projected_setup, double);
 BENCHMARK(area);
 BENCHMARK(ggx_brdf);
 BENCHMARK(shade);
-BENCHMARK_CAPTURE(shade_shadowed, ltc_polygon, ltc::shadow_sampler::ltc_polygon)->Arg(4)->Arg(16);
-BENCHMARK_CAPTURE(shade_shadowed, light_area, ltc::shadow_sampler::light_area)->Arg(4)->Arg(16);
+BENCHMARK_CAPTURE(shade_shadowed, ltc_polygon, ltc::shadow_sampler::ltc_polygon)->Arg(1)->Arg(4)->Arg(16);
+BENCHMARK_CAPTURE(shade_shadowed, light_area, ltc::shadow_sampler::light_area)->Arg(1)->Arg(4)->Arg(16);
 
 LTC_BENCHMARK_MAIN();

@@ -1,14 +1,12 @@
 // Shadowed polygonal lights (ltc/shading/shadowed_polygon_light.hpp): the ratio estimator of
 // Heitz, Hill and McGuire 2018 and its unbiased companion, with a visibility callback.
 //   (a) nothing occludes: the ratio is exactly 1, so the result is the analytic shading bit for
-//       bit, for both samplers and every K; the queries made are 2K (LTC and cosine samplers) or
-//       K (light-area samples shared by both terms);
+//       bit, for both samplers and every K; each sample makes one query (K in all);
 //   (b) everything occludes: 0; a light facing away (one-sided) or degenerate input: 0 and no
 //       query;
 //   (c) a half-space occluder through the shading point (visible: d . m >= 0), whose visible part
 //       of the light is the light clipped by that plane, a convex polygon with closed forms:
-//       - the diffuse ratio with the exact cosine sampler estimates E(visible) / E(light) (both
-//         closed forms, eq. 11);
+//       - the diffuse ratio estimates E(visible) / E(light) (both closed forms, eq. 11);
 //       - the specular ratio estimates int_vis f / int_P f (f the GGX lobe), the unbiased
 //         estimate int_vis f (F0 = 1, so that Schlick's factor is 1), both against the
 //         library's Monte Carlo ground truth;
@@ -107,7 +105,7 @@ TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly
             REQUIRE(r.unshadowed.specular.x > 0.0f);
             CHECK(r.ratio.specular == r.unshadowed.specular);
             CHECK(r.ratio.diffuse == r.unshadowed.diffuse);
-            CHECK(r.rays == (sampler == ltc::shadow_sampler::ltc_polygon ? 2 * K : K));
+            CHECK(r.rays == K);
         }
 }
 
@@ -199,8 +197,8 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         CHECK(std::abs(unbiased.mean - want) <=
               4 * std::hypot(unbiased.error, kRadiance.x * t_vis.standard_error) + 1e-4 * want);
         if (sampler == ltc::shadow_sampler::ltc_polygon) {
-            // The exact sampler makes the diffuse ratio the visible fraction of the samples: its
-            // spread is the lattice's, far below a binomial's sqrt(p (1 - p) / K) ~ 0.016.
+            // Exact samplers: the diffuse ratio's spread is the lattice's and the lobes' mismatch,
+            // below a binomial's sqrt(p (1 - p) / K) ~ 0.016.
             CHECK(diffuse.error * std::sqrt(double(R)) < 0.016);
         }
     }

@@ -66,6 +66,18 @@ struct polygon_light_result {
     glm::vec<3, T> diffuse{T(0)};
 };
 
+/// The radiance of the file comment from the two signed integrals (the light's facing applied).
+template <typename T>
+LTC_HOST_DEVICE inline polygon_light_result<T> polygon_light_radiance(const polygon_light_integrals<T>& I,
+                                                                      const ltc_coefficients<T>& lobe,
+                                                                      const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo,
+                                                                      const glm::vec<3, T>& radiance, sidedness side) {
+    polygon_light_result<T> r;
+    r.specular = radiance * brdf_scale(F0, lobe) * apply_sidedness(I.ltc, side);
+    r.diffuse = albedo * radiance * apply_sidedness(I.form_factor, side);
+    return r;
+}
+
 /// Shading with explicit LTC coefficients (m_inv in the local frame of `frame`, magnitude,
 /// fresnel; e.g. from ltc::ltc_table::fetch(frame.cos_theta_v, roughness)).
 template <typename Policy = edge_policy::automatic, typename T>
@@ -74,12 +86,8 @@ LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
     horizon_clipping clip = horizon_clipping::ltc_space) {
-    const polygon_light_integrals<T> I = integrate_polygon_light<Policy>(frame, lobe.m_inv, P, vertices, n, clip);
-    polygon_light_result<T> r;
-    const glm::vec<3, T> specular_scale = brdf_scale(F0, lobe);
-    r.specular = radiance * specular_scale * apply_sidedness(I.ltc, side);
-    r.diffuse = albedo * radiance * apply_sidedness(I.form_factor, side);
-    return r;
+    return polygon_light_radiance(integrate_polygon_light<Policy>(frame, lobe.m_inv, P, vertices, n, clip), lobe, F0,
+                                  albedo, radiance, side);
 }
 
 /// Shading with the library's GGX table: cos theta_v from N and V, the coefficients from

@@ -14,29 +14,32 @@
 //                                              ltc::shadow_options<float>{16, per_pixel_shift});
 //   glm::vec3 colour = r.ratio.specular + r.ratio.diffuse;
 //
-// Samples (shadow_sampler):
-//   ltc_polygon  specular: w_k from the LTC restricted to the polygon, density D / I_D
-//                (ltc/core/ltc_polygon_sampling.hpp, exact); diffuse: the clamped cosine
-//                restricted to the polygon, density cos / E (the same sampler with M = I).
-//                Where the light is unoccluded the ratio is exactly 1 (the analytic result is
-//                returned without noise), and for the diffuse term f / p is constant, so its
-//                ratio is the visible fraction of the samples, with no other noise.
-//                2K visibility queries (K when the albedo is zero).
-//   light_area   one set of K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp)
-//                shared by both terms, density |x - P|^2 / (A |cos theta_x|): the common
-//                renderer baseline. K queries.
+// Samples (shadow_sampler), K in all, one visibility query each, every sample serving both terms:
+//   ltc_polygon  the exact samplers of the two lobes restricted to the polygon: the LTC, density
+//                D / I_D (ltc/core/ltc_polygon_sampling.hpp), and the clamped cosine, density
+//                cos / E (ltc/core/projected_solid_angle_sampling.hpp), the K samples split
+//                between them in proportion to the specular and diffuse shares of the analytic
+//                result, and weighted by the balance heuristic over the whole plan (multi-sample
+//                MIS, Veach 1997 eq. 9.13: f / (K_s D / I_D + K_d cos / E), both normalizers known
+//                in closed form). Where the light is unoccluded the ratio is exactly 1 (the
+//                analytic result, without noise); a term whose own sampler takes all K samples
+//                has f / p nearly constant (exactly, for the diffuse term), so its ratio is close
+//                to the visible fraction of the samples, with little other noise.
+//   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
+//                density |x - P|^2 / (A |cos theta_x|): the common renderer baseline.
 // f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/fitting/brdf/ggx.hpp,
 // alpha = roughness^2) for the specular term, cos / pi for the diffuse one; the ratio corrects
 // the analytic result for visibility only. The directions are a rank-1 lattice, (k + 1/2) / K
-// and k / phi (the golden ratio) modulo 1, shifted by options.rotation (Cranley-Patterson
-// rotation: pass a random shift per pixel to turn the structured error into noise).
+// and k / phi (the golden ratio) modulo 1, per sampler, shifted by options.rotation
+// (Cranley-Patterson rotation: pass a random shift per pixel to turn the structured error into
+// noise).
 //
 // Outputs: `unshadowed` (= shade_polygon_light, horizon clipping ltc_space), `ratio` (the
 // estimator above: biased, consistent, exact when nothing occludes the light) and `unbiased`
 // (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the same samples and
-// visibility: (1/K) sum f V / p, for comparison; it carries the BRDF's noise instead of the
-// LTC's fitting error). A light that faces away (one-sided) or lies below the horizon gives 0
-// and makes no queries.
+// visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of
+// the LTC's fitting error). A light that faces away (one-sided) or lies below the horizon gives 0
+// and makes no queries; K = 0 gives the analytic result.
 //
 // Visibility callback: bool visible(origin, unit direction, distance), all world space, the
 // distance measured to the light's plane along the direction; offset origin and distance by the
@@ -62,7 +65,7 @@ enum class shadow_sampler { ltc_polygon, light_area };
 
 template <typename T>
 struct shadow_options {
-    std::size_t samples = 4;        ///< K: directions per lobe
+    std::size_t samples = 4;        ///< K: directions (visibility queries) per call
     glm::vec<2, T> rotation{T(0)};  ///< Cranley-Patterson shift in [0, 1)^2, random per pixel
     shadow_sampler sampler = shadow_sampler::ltc_polygon;
 };
@@ -116,76 +119,76 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const shading_frame<T> frame = make_shading_frame(N, V);
     if (!frame.valid || n < 3 || n > max_vertices) return r;
     const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
-    r.unshadowed = shade_polygon_light(frame, lobe, P, F0, albedo, radiance, vertices, n, side);
-    const bool diffuse = albedo != vec3(T(0));
-    if (r.unshadowed.specular == vec3(T(0)) && r.unshadowed.diffuse == vec3(T(0))) return r;
+    const polygon_light_integrals<T> I = integrate_polygon_light<edge_policy::automatic>(frame, lobe.m_inv, P, vertices, n);
+    r.unshadowed = polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
+    r.ratio = r.unshadowed;
+    const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
+    const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;
+    const std::size_t K = options.samples;
+    if (!(weight_s + weight_d > T(0)) || K == 0) return r;
 
     vec3 local[max_vertices];
     for (std::size_t i = 0; i < n; ++i) local[i] = frame.to_local(vertices[i] - P);
     const polygon_area_sampler<T, max_vertices> plane(vertices, n);
     const vec3 v_local(detail::safe_sqrt(T(1) - frame.cos_theta_v * frame.cos_theta_v), T(0), frame.cos_theta_v);
     const T alpha = roughness * roughness;
+    const auto d = transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv);
+    const T i_d = std::abs(I.ltc), e = pi<T>() * std::abs(I.form_factor);  // the two densities' normalizers
+
+    // Each direction l (local) with its density under the whole sample plan, sum_k n_k p_k(l) (the
+    // balance heuristic's denominator, Veach 1997 eq. 9.13), adds f / density to both terms.
+    detail::ratio_sums<T> spec, diff;
+    const auto add = [&](const vec3& l, const vec3& world, T distance, T density) {
+        if (!(density > T(0))) return;
+        ++r.rays;
+        const bool seen = distance > T(0) && static_cast<bool>(visible(P, world, distance));
+        const vec3 h = detail::safe_normalize(v_local + l);  // Schlick's factor at V.H
+        const T m = T(1) - glm::clamp(glm::dot(v_local, h), T(0), T(1));
+        const vec3 fresnel = F0 + (vec3(T(1)) - F0) * (m * m * m * m * m);
+        spec.add(brdf::ggx<T>::eval(v_local, l, alpha) / density, fresnel, seen);
+        diff.add(glm::max(l.z, T(0)) / pi<T>() / density, vec3(T(1)), seen);
+    };
     const auto to_world = [&](const vec3& w) { return frame.t1 * w.x + frame.t2 * w.y + frame.n * w.z; };
-    // Distance along the unit world direction d to the light's plane.
-    const auto distance = [&](const vec3& d) {
-        const T c = glm::dot(d, plane.normal());
+    const auto plane_distance = [&](const vec3& w) {  // along the unit world direction w
+        const T c = glm::dot(w, plane.normal());
         return c != T(0) ? glm::dot(vertices[0] - P, plane.normal()) / c : T(0);
     };
-    const auto fresnel = [&](const vec3& l) {  // Schlick, with V.H of the half vector
-        const vec3 h = detail::safe_normalize(v_local + l);
-        const T m = T(1) - glm::clamp(glm::dot(v_local, h), T(0), T(1));
-        const T m2 = m * m;
-        return F0 + (vec3(T(1)) - F0) * (m2 * m2 * m);
-    };
-    const auto query = [&](const vec3& l_world, T t) {
-        ++r.rays;
-        return t > T(0) && static_cast<bool>(visible(P, l_world, t));
-    };
 
-    detail::ratio_sums<T> spec, diff;
-    const std::size_t K = options.samples;
     if (options.sampler == shadow_sampler::ltc_polygon) {
-        const ltc_polygon_sampler<T, max_vertices> lobe_sampler(transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv),
-                                                                local, n);
-        const projected_polygon_sampler<T, max_vertices> cosine_sampler(local, n);
-        for (std::size_t k = 0; k < K; ++k) {
-            const glm::vec<2, T> u = detail::lattice_point(k, K, options.rotation);
-            if (!lobe_sampler.empty()) {
-                const polygon_sample<T> x = lobe_sampler.sample(u);
-                if (x.pdf > T(0)) {
-                    const vec3 d = to_world(x.direction);
-                    const bool seen = query(d, distance(d));
-                    spec.add(brdf::ggx<T>::eval(v_local, x.direction, alpha) / x.pdf, fresnel(x.direction), seen);
-                }
-            }
-            if (diffuse && !cosine_sampler.empty()) {
-                const polygon_sample<T> x = cosine_sampler.sample(u);
-                if (x.pdf > T(0)) {
-                    const vec3 d = to_world(x.direction);
-                    diff.add(x.direction.z / pi<T>() / x.pdf, vec3(T(1)), query(d, distance(d)));
-                }
-            }
+        // Samples split between the two exact samplers in proportion to the terms' shares.
+        std::size_t ks = static_cast<std::size_t>(std::lround(T(K) * weight_s / (weight_s + weight_d)));
+        if (!(i_d > T(0))) ks = 0;
+        if (!(e > T(0))) ks = K;
+        const std::size_t kd = K - ks;
+        ltc_polygon_sampler<T, max_vertices> lobe_sampler;
+        projected_polygon_sampler<T, max_vertices> cosine_sampler;
+        if (ks > 0) lobe_sampler = ltc_polygon_sampler<T, max_vertices>(d, local, n);
+        if (kd > 0) cosine_sampler = projected_polygon_sampler<T, max_vertices>(local, n);
+        const auto density = [&](const vec3& l) {
+            return (ks > 0 ? T(ks) * d.eval(l) / i_d : T(0)) + (kd > 0 ? T(kd) * glm::max(l.z, T(0)) / e : T(0));
+        };
+        for (std::size_t k = 0; k < ks && !lobe_sampler.empty(); ++k) {
+            const vec3 l = lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation)).direction;
+            const vec3 w = to_world(l);
+            add(l, w, plane_distance(w), density(l));
+        }
+        for (std::size_t k = 0; k < kd && !cosine_sampler.empty(); ++k) {
+            const vec3 l = cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation)).direction;
+            const vec3 w = to_world(l);
+            add(l, w, plane_distance(w), density(l));
         }
     } else {
         for (std::size_t k = 0; k < K && !plane.empty(); ++k) {
             const vec3 x = plane.sample(detail::lattice_point(k, K, options.rotation));
-            const T p = plane.solid_angle_pdf(P, x);
-            if (!(p > T(0))) continue;
-            const vec3 d = detail::safe_normalize(x - P);
-            const vec3 l = frame.to_local(d);
-            const bool seen = query(d, glm::length(x - P));
-            spec.add(brdf::ggx<T>::eval(v_local, l, alpha) / p, fresnel(l), seen);
-            if (diffuse) diff.add(glm::max(l.z, T(0)) / pi<T>() / p, vec3(T(1)), seen);
+            const vec3 w = detail::safe_normalize(x - P);
+            add(frame.to_local(w), w, glm::length(x - P), T(K) * plane.solid_angle_pdf(P, x));
         }
     }
 
     r.ratio.specular = r.unshadowed.specular * spec.ratio();
     r.ratio.diffuse = r.unshadowed.diffuse * diff.ratio();
-    if (K > 0) {
-        const T inv_k = T(1) / T(K);
-        r.unbiased.specular = radiance * spec.unbiased * inv_k;
-        r.unbiased.diffuse = albedo * radiance * (diff.visible * inv_k);
-    }
+    r.unbiased.specular = radiance * spec.unbiased;
+    r.unbiased.diffuse = albedo * radiance * diff.visible;
     return r;
 }
 
