@@ -29,6 +29,8 @@
 #include <ltc/core/transformed.hpp>
 #include <ltc/core/line_integral.hpp>
 #include <ltc/core/ellipse_integral.hpp>
+#include <ltc/core/spherical_triangle_sampling.hpp>
+#include <ltc/core/spherical_polygon_sampling.hpp>
 #include <ltc/core/projected_solid_angle_sampling.hpp>
 #include <ltc/core/ltc_polygon_sampling.hpp>
 #include <ltc/core/polygon_area_sampling.hpp>

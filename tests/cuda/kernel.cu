@@ -22,9 +22,12 @@ __global__ void sample_quads(const glm::vec3* quads, const glm::mat3* m_inv, glm
     const ltc::projected_polygon_sampler<float> cosine(q, 4);
     const ltc::ltc_polygon_sampler<float> lobe(ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(m_inv[i]), q, 4);
     const ltc::polygon_area_sampler<float> area(q, 4);
+    const ltc::spherical_polygon_sampler<float> solid(q, 4);
+    const ltc::spherical_triangle_sampler<float> tri(glm::normalize(q[0]), glm::normalize(q[1]), glm::normalize(q[2]));
     const ltc::polygon_sample<float> a = cosine.sample(u), b = lobe.sample(u);
-    const glm::vec3 x = area.sample(u);
-    out[i] = glm::vec4(a.direction + b.direction + x, a.pdf + b.pdf + cosine.pdf(a.direction) + lobe.pdf(b.direction) +
-                                                          cosine.invert(a.direction).x + lobe.invert(b.direction).y +
-                                                          area.solid_angle_pdf(glm::vec3(0.0f), x));
+    const glm::vec3 x = area.sample(u), y = solid.sample(u), z = tri.sample(u);
+    const float pdfs = a.pdf + b.pdf + cosine.pdf(a.direction) + lobe.pdf(b.direction) + solid.pdf(y) + tri.pdf(z) +
+                       area.solid_angle_pdf(glm::vec3(0.0f), x);
+    const float inverses = cosine.invert(a.direction).x + lobe.invert(b.direction).y + solid.invert(y).x + tri.invert(z).y;
+    out[i] = glm::vec4(a.direction + b.direction + x + y + z, pdfs + inverses);
 }

@@ -1,0 +1,147 @@
+// ltc/core/spherical_polygon_sampling.hpp -- uniform sampling in solid angle of a convex planar
+// polygon seen from the origin, as a sampler trio (sample / pdf / invert) for host and device
+// code (fixed capacity, no heap, no exceptions), in float or double.
+//
+//   const ltc::spherical_polygon_sampler<float> s(vertices, n);   // n <= 8, any scale and winding
+//   glm::vec3 w = s.sample(u);    // u in [0, 1)^2; density s.pdf(w) = 1 / s.solid_angle() inside
+//   glm::vec2 v = s.invert(w);    // v == u up to rounding
+//
+// Precondition: the polygon is convex and planar, and its plane misses the origin (a polygon
+// light seen from a shading point in front of or behind it). The spherical polygon is then convex
+// and lies in an open hemisphere. (Non-convex polygons: ltc::ground_truth::spherical_polygon.)
+//
+// The polygon is a fan of triangles around vertex 0 (v_0, v_k, v_k+1), k = 1 .. n-2, each sampled
+// by Arvo's method (ltc/core/spherical_triangle_sampling.hpp) as (a, b, c) = (v_k, v_0, v_k+1):
+// then u.x = 0 is the edge v_0 v_1, u.x = 1 the edge v_n-1 v_0, the diagonal v_0 v_k+1 is where
+// triangle k ends and k+1 begins, and u.y = 0 is v_0; u.x picks triangle k with probability
+// Omega_k / Omega (Van Oosterom and Strackee 1983) and is rescaled into [0, 1] for it, so the
+// mapping [0, 1)^2 -> polygon is continuous and one 2D sample keeps its stratification.
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/core/solid_angle.hpp>  // triangle_solid_angle
+#include <ltc/core/spherical_triangle_sampling.hpp>
+#include <ltc/detail/math.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstddef>
+
+namespace ltc {
+
+/// Uniform sampling in solid angle of a convex planar polygon of at most MaxVertices vertices,
+/// seen from the origin (file comment).
+template <typename T, std::size_t MaxVertices = 8>
+class spherical_polygon_sampler {
+    static_assert(MaxVertices >= 3, "a polygon has at least 3 vertices");
+
+  public:
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+
+    /// vertices[0..n): a convex planar polygon (any scale, either winding) whose plane misses the
+    /// origin. n < 3, n > MaxVertices, a vertex at the origin, non-finite vertices or zero solid
+    /// angle (the polygon seen edge-on) give an empty sampler.
+    LTC_HOST_DEVICE spherical_polygon_sampler(const vec3* vertices, std::size_t n) {
+        if (n < 3 || n > MaxVertices) return;
+        for (std::size_t i = 0; i < n; ++i) {
+            v_[i] = detail::safe_normalize(vertices[i]);
+            if (v_[i] == vec3(T(0)) || !detail::is_finite(v_[i])) return;  // at the origin: seen edge-on
+        }
+        // Orientation from the signed total (ltc::solid_angle's fan); a fan triangle of the other
+        // orientation can only come from rounding (collinear vertices) and is never sampled.
+        T omega[MaxVertices - 2]{};
+        T signed_total = T(0);
+        for (std::size_t k = 1; k + 1 < n; ++k)
+            signed_total += omega[k - 1] = triangle_solid_angle(v_[0], v_[k], v_[k + 1]);
+        if (!(std::abs(signed_total) > T(0)) || !std::isfinite(signed_total)) return;
+        const T s = signed_total > T(0) ? T(1) : T(-1);
+        T acc = T(0);
+        for (std::size_t k = 1; k + 1 < n; ++k) {
+            if (s * omega[k - 1] > T(0)) tri_[k - 1] = spherical_triangle_sampler<T>(v_[k], v_[0], v_[k + 1]);
+            acc += tri_[k - 1].solid_angle();
+            cdf_[k - 1] = acc;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            const vec3& a = v_[i];
+            const vec3& b = v_[i + 1 < n ? i + 1 : 0];
+            n_[i] = s * detail::stable_cross(a, b, glm::dot(a, b));
+        }
+        n_vertices_ = n;
+        orientation_ = s;
+        total_ = acc;
+    }
+
+    /// Solid angle of the polygon (the sum of its fan triangles'); 0 when empty().
+    LTC_HOST_DEVICE T solid_angle() const { return total_; }
+    /// No direction to sample (constructor); then sample() returns a finite unit direction (the
+    /// first vertex when it is one) and pdf() is 0.
+    LTC_HOST_DEVICE bool empty() const { return !(total_ > T(0)); }
+
+    /// A direction uniformly distributed in the polygon for u in [0, 1]^2 (file comment).
+    LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
+        if (empty()) return v_[0] == vec3(T(0)) || !detail::is_finite(v_[0]) ? vec3(T(0), T(0), T(1)) : v_[0];
+        const T target = u.x * total_;
+        // The first triangle whose cdf step passes target (empty triangles have flat steps); the
+        // last non-empty one when rounding puts target at or above the total.
+        std::size_t k = 0, last = 0;
+        bool found = false;
+        for (std::size_t i = 0; i + 2 < n_vertices_; ++i) {
+            if (tri_[i].empty()) continue;
+            last = i;
+            if (!found && target < cdf_[i]) {
+                k = i;
+                found = true;
+            }
+        }
+        if (!found) k = last;
+        const T below = k > 0 ? cdf_[k - 1] : T(0);
+        const T ux = glm::clamp((target - below) / tri_[k].solid_angle(), T(0), T(1));
+        return tri_[k].sample(vec2(ux, u.y));
+    }
+
+    /// 1 / solid_angle() for unit w on the inner side of the great circles of all edges (the
+    /// polygon is convex), 0 elsewhere and when empty().
+    LTC_HOST_DEVICE T pdf(const vec3& w) const {
+        if (empty()) return T(0);
+        for (std::size_t i = 0; i < n_vertices_; ++i)
+            if (glm::dot(w, n_[i]) < T(0)) return T(0);
+        return T(1) / total_;
+    }
+
+    /// The u in [0, 1]^2 that sample() maps to the unit direction w (u = 0 when empty(); for w
+    /// outside, the u of a nearby point of the polygon).
+    LTC_HOST_DEVICE vec2 invert(const vec3& w) const {
+        if (empty()) return vec2(T(0));
+        // The fan triangle of w: the last non-empty (v_0, v_k, v_k+1) with w past its first side
+        // v_0 v_k (the polygon is convex: w is past the diagonals through v_0 up to its own
+        // triangle's). A point on a diagonal maps to the same u from either side.
+        std::size_t k = 0;
+        bool first = true;
+        for (std::size_t i = 0; i + 2 < n_vertices_; ++i) {
+            if (tri_[i].empty()) continue;
+            if (first || past_diagonal(w, i + 1)) k = i;
+            first = false;
+        }
+        const vec2 ut = tri_[k].invert(w);
+        const T below = k > 0 ? cdf_[k - 1] : T(0);
+        return vec2(glm::clamp((below + ut.x * tri_[k].solid_angle()) / total_, T(0), T(1)), ut.y);
+    }
+
+  private:
+    /// w on the side of the great circle through v_0 and v_i where v_i+1 is: the sign of
+    /// w.(v_0 x v_i) is that of v_i+1.(v_0 x v_i) = v_0.(v_i x v_i+1), the orientation.
+    LTC_HOST_DEVICE bool past_diagonal(const vec3& w, std::size_t i) const {
+        return orientation_ * glm::dot(w, detail::stable_cross(v_[0], v_[i], glm::dot(v_[0], v_[i]))) >= T(0);
+    }
+
+    vec3 v_[MaxVertices]{};                                 // unit vertices
+    vec3 n_[MaxVertices]{};                                 // inward normals of the edges' great circles
+    spherical_triangle_sampler<T> tri_[MaxVertices - 2]{};  // (v_k, v_0, v_k+1), empty if not sampled
+    T cdf_[MaxVertices - 2]{};                              // running sums of their solid angles
+    T total_ = T(0), orientation_ = T(0);                   // solid angle; sign of the signed one
+    std::size_t n_vertices_ = 0;
+};
+
+}  // namespace ltc
