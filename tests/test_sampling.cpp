@@ -12,6 +12,7 @@
 //       (hemisphere), sqrt(1 - u.x) (cosine), cbrt(1 - u.x) (squared cosine); phi = 2 pi u.y.)
 // Every random sequence has a fixed seed (ltc_test::rng), so the tests are deterministic.
 #include "support/original_distributions.hpp"
+#include "support/chi_square.hpp"
 #include "support/rng.hpp"
 #include "support/sphere_quadrature.hpp"
 
@@ -86,20 +87,7 @@ T below_one() {
     return T(1) - std::numeric_limits<T>::epsilon() / 2;
 }
 
-/// Upper 1e-4 quantile of chi-square with nu degrees of freedom, by the Wilson-Hilferty
-/// approximation: (X^2 / nu)^(1/3) is nearly normal with mean 1 - 2 / (9 nu) and variance
-/// 2 / (9 nu), so chi2_p(nu) ~= nu (1 - 2 / (9 nu) + z_p sqrt(2 / (9 nu)))^3 with z_p the upper-p
-/// normal quantile, z = Phi^-1(1 - 1e-4) = 3.7190164854557. Source: E. B. Wilson and
-/// M. M. Hilferty, "The distribution of chi-square", PNAS 17(12):684-688, 1931; Abramowitz &
-/// Stegun, Handbook of Mathematical Functions, 26.4.17. At this tail it errs on the high side:
-/// 16.2 vs 15.14 exact for nu = 1, 26.3 vs 25.7 for nu = 5, 36.0 vs 35.6 for nu = 10, within 0.5%
-/// for nu >= 50.
-double chi_square_critical_1e4(int nu) {
-    const double z = 3.7190164854557084;
-    const double a = 2.0 / (9.0 * nu);
-    const double c = 1.0 - a + z * std::sqrt(a);
-    return nu * c * c * c;
-}
+using ltc_test::chi_square_critical_1e4;
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 //   (d) tiny, near-hemisphere, grazing, thin and nearly collinear shapes: finite unit samples,
 //       inside up to the margin; empty input: finite unit samples, pdf 0.
 // Shapes have dyadic coordinates, exact in float. Every random sequence has a fixed seed.
+#include "support/chi_square.hpp"
 #include "support/rng.hpp"
 
 #include <ltc/core/solid_angle.hpp>
@@ -40,12 +41,7 @@ constexpr double margin_eps = 24;
 // lose that when c' or w is nearly -b (the near-hemisphere square's v_0 v_2: 178.7 deg, amp 90).
 constexpr double round_trip_jacobian_eps = 32, round_trip_eps = 6;
 
-/// Upper 1e-4 quantile of chi-square with nu degrees of freedom (Wilson-Hilferty, as in
-/// test_sampling.cpp: nu (1 - 2 / (9 nu) + z sqrt(2 / (9 nu)))^3, z = Phi^-1(1 - 1e-4)).
-double chi_square_critical_1e4(int nu) {
-    const double z = 3.7190164854557084, a = 2.0 / (9.0 * nu), c = 1.0 - a + z * std::sqrt(a);
-    return nu * c * c * c;
-}
+using ltc_test::chi_square_critical_1e4;
 
 struct shape {  // regular shapes are in (a) - (c) too
     std::string name;

@@ -60,12 +60,26 @@ class ltc_polygon_sampler {
         return sample(u, evaluations);
     }
 
+    /// The returned pdf is pdf(direction): the round trip M w_o, M^-1 w can carry a sample next to
+    /// the edge of M^-1 P (or its horizon) just outside, where pdf() is 0; such a sample is moved
+    /// towards the polygon's interior by the smallest power-of-16 multiple of epsilon that brings
+    /// it back (as transformed<>::sample does; a bias confined to a set of measure ~cond(M)
+    /// epsilon).
     LTC_HOST_DEVICE polygon_sample<T> sample(const vec2& u, int& evaluations) const {
         polygon_sample<T> x = cosine_.sample(u, evaluations);
         if (empty()) return x;  // pdf 0
-        const vec3 w = detail::safe_normalize(m_ * x.direction);
-        x.pdf *= jacobian(w);
-        x.direction = w;
+        vec3 wo = x.direction;
+        x.direction = detail::safe_normalize(m_ * wo);
+        x.pdf = pdf(x.direction);
+        if (!(x.pdf > T(0))) {
+            const vec3 inside = cosine_.interior();
+            T lift = detail::epsilon<T>();
+            for (int i = 0; i < 16 && !(x.pdf > T(0)); ++i, lift *= T(16)) {
+                wo = detail::safe_normalize(wo + lift * inside);
+                x.direction = detail::safe_normalize(m_ * wo);
+                x.pdf = pdf(x.direction);
+            }
+        }
         return x;
     }
 

@@ -20,11 +20,15 @@
 // Both solves run inside bisection brackets to about 4 epsilon of the target, so the
 // distribution is exact to rounding and invert() (closed forms, no solve) is its inverse.
 //
-// Accuracy. The projected solid angle of a triangle of angular size h is a sum of edge terms of
-// size h that cancel to h^2: relative error ~ epsilon / h, i.e. 1e-4 for a float triangle of a
-// thousandth of a radian (in double, 1e-13). The sampled directions are inside the polygon for
-// any size; what degrades for tiny triangles is the match of the density to w.z, which is then
-// nearly constant over the triangle anyway.
+// Accuracy. A fan triangle's projected solid angle is a sum of edge terms that cancel: for a
+// triangle of angular size h it is ~h^2 from terms of size h, for a sliver of height d above the
+// horizon ~d^2 from terms of its width, and F's relative error is epsilon times their ratio
+// (projected_triangle::condition). Where that exceeds 2^-12 in some fan triangle (in float: a
+// triangle under ~1e-3 rad, or a sliver within ~0.01 rad of the horizon), the whole fan is
+// evaluated in the wider type Wide (double for float; Wide = T opts out, e.g. on a GPU), so that
+// the distribution stays w.z / E to ~2^-12 or better in float and to rounding in double. (In
+// float without it, a quad clipped to 0.001 rad above the horizon put 72% of its samples in a
+// sixteenth of its area; the tests found it.)
 //
 // Preconditions and degenerate input. A convex planar polygon (light polygons are), any scale,
 // either winding, at most MaxVertices vertices. n < 3, n > MaxVertices, a vertex at the origin
@@ -41,6 +45,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace ltc {
 
@@ -51,8 +56,76 @@ struct polygon_sample {
     T pdf{0};
 };
 
+namespace detail {
+
+/// The wider type of the ill-conditioned fans (file comment): double for float.
+template <typename T>
+using wider_t = std::conditional_t<std::is_same_v<T, float>, double, T>;
+
+/// The fan of triangles (v0, v_i, v_i+1) of a clipped polygon, in precision C: their masses'
+/// cumulative sums choose the triangle, and u.x is rescaled into it.
+template <typename C, std::size_t N>
+struct projected_fan {
+    projected_triangle<C> tris[N]{};
+    C cdf[N]{};
+    std::size_t count = 0;
+    C total{0}, worst_condition{0};
+    C orientation{1};  // the sign of the largest triangle: the polygon's orientation
+
+    /// The unit vertices v (in T) as unit vectors in C: renormalized when C is wider.
+    template <typename T>
+    LTC_HOST_DEVICE static glm::vec<3, C> unit(const glm::vec<3, T>& v) {
+        if constexpr (std::is_same_v<T, C>) return v;
+        else return safe_normalize(glm::vec<3, C>(v));
+    }
+
+    template <typename T>
+    LTC_HOST_DEVICE void build(const glm::vec<3, T>* v, std::size_t m) {
+        count = 0;
+        total = worst_condition = C(0);
+        C largest(0);
+        for (std::size_t i = 1; i + 1 < m; ++i) {
+            projected_triangle<C>& t = tris[count++];
+            t = projected_triangle<C>(unit(v[0]), unit(v[i]), unit(v[i + 1]));
+            total += t.mass;
+            cdf[count - 1] = total;
+            worst_condition = glm::max(worst_condition, t.condition);
+            if (t.mass > largest) largest = t.mass, orientation = t.sign;
+        }
+    }
+
+    /// Samples triangle k (returned) with u.x rescaled into it.
+    LTC_HOST_DEVICE glm::vec<3, C> sample(C ux, C uy, std::size_t& k, int& evaluations) const {
+        k = 0;
+        const C target = ux * total;
+        while (k + 1 < count && (cdf[k] <= target || !(tris[k].mass > C(0)))) ++k;
+        const projected_triangle<C>& t = tris[k];
+        const C below = k > 0 ? cdf[k - 1] : C(0);
+        const C u1 = t.mass > C(0) ? glm::clamp((target - below) / t.mass, C(0), C(1)) : C(0);
+        return t.sample(u1, uy, evaluations);
+    }
+
+    LTC_HOST_DEVICE glm::vec<2, C> invert(const glm::vec<3, C>& w) const {
+        // The fan triangle whose angle at the apex holds w.
+        std::size_t k = 0;
+        for (; k + 1 < count; ++k) {
+            const projected_triangle<C>& t = tris[k];
+            const glm::vec<3, C> wa = w - t.a;
+            if (std::atan2(glm::dot(wa, t.t_c), glm::dot(wa, t.t_b)) <= t.alpha) break;
+        }
+        const glm::vec<2, C> local = tris[k].invert(w);
+        const C below = k > 0 ? cdf[k - 1] : C(0);
+        return glm::vec<2, C>(glm::clamp((below + local.x * tris[k].mass) / total, C(0), C(1)), local.y);
+    }
+};
+
+/// Stands in for the wide fan when Wide is T itself (never used).
+struct no_fan {};
+
+}  // namespace detail
+
 /// Sampling of w.z over a convex spherical polygon clipped to the horizon (file comment).
-template <typename T, std::size_t MaxVertices = 8>
+template <typename T, std::size_t MaxVertices = 8, typename Wide = detail::wider_t<T>>
 class projected_polygon_sampler {
   public:
     using vec2 = glm::vec<2, T>;
@@ -71,23 +144,25 @@ class projected_polygon_sampler {
             v_[i] = detail::safe_normalize(clipped[i]);
             if (v_[i] == vec3(T(0)) || !detail::is_finite(v_[i])) return;  // seen edge-on
         }
-        T total(0), largest(0);
-        for (std::size_t i = 1; i + 1 < m; ++i) {
-            detail::projected_triangle<T>& t = tris_[count_++];
-            t = detail::projected_triangle<T>(v_[0], v_[i], v_[i + 1]);
-            total += t.mass;
-            cdf_[count_ - 1] = total;
-            if (t.mass > largest) largest = t.mass, orientation_ = t.sign;
+        fan_.build(v_, m);
+        T total = fan_.total, orientation = fan_.orientation;
+        if constexpr (widens) {
+            if (fan_.worst_condition * detail::epsilon<T>() > T(1.0 / 4096)) {
+                wide_fan_.build(v_, m);
+                wide_ = true;
+                total = T(wide_fan_.total);
+                orientation = T(wide_fan_.orientation);
+            }
         }
-        if (!(total > T(0)) || !std::isfinite(total)) return;
+        // pdf = w.z / E <= 1 / E must stay finite: a subnormal E is an empty polygon.
+        if (!(total >= T(4) * detail::min_normal<T>()) || !std::isfinite(total)) return;
         vertex_count_ = m;
         total_ = total;
-        // Great-circle normals pointing inwards, for pdf(): the fan triangle of largest mass gives
-        // the orientation (sign) of the whole convex polygon.
+        // Great-circle normals pointing inwards, for pdf().
         for (std::size_t i = 0; i < m; ++i) {
             const vec3& p = v_[i];
             const vec3& q = v_[(i + 1) % m];
-            edge_normal_[i] = orientation_ * detail::stable_cross(p, q, glm::dot(p, q));
+            edge_normal_[i] = orientation * detail::stable_cross(p, q, glm::dot(p, q));
         }
     }
 
@@ -95,6 +170,9 @@ class projected_polygon_sampler {
 
     /// E = int_P max(0, w.z) dw (pi times eq. 11's clipped form factor).
     LTC_HOST_DEVICE T projected_solid_angle() const { return total_; }
+
+    /// Whether the fan is evaluated in Wide (file comment).
+    LTC_HOST_DEVICE bool widened() const { return wide_; }
 
     /// A direction with density direction.z / E in the polygon, for u in [0, 1]^2. The returned
     /// pdf is the density at the sample (computed from it, without a containment test).
@@ -108,13 +186,16 @@ class projected_polygon_sampler {
     LTC_HOST_DEVICE polygon_sample<T> sample(const vec2& u, int& evaluations) const {
         polygon_sample<T> r;
         if (empty()) return r;
+        const vec2 c = glm::clamp(u, T(0), T(1));
         std::size_t k = 0;
-        const T target = glm::clamp(u.x, T(0), T(1)) * total_;
-        while (k + 1 < count_ && (cdf_[k] <= target || !(tris_[k].mass > T(0)))) ++k;
-        const detail::projected_triangle<T>& t = tris_[k];
-        const T below = k > 0 ? cdf_[k - 1] : T(0);
-        const T u1 = t.mass > T(0) ? glm::clamp((target - below) / t.mass, T(0), T(1)) : T(0);
-        vec3 w = detail::safe_normalize(t.sample(u1, glm::clamp(u.y, T(0), T(1)), evaluations));
+        vec3 w;
+        if constexpr (widens) {
+            if (wide_) w = vec3(wide_fan_.sample(Wide(c.x), Wide(c.y), k, evaluations));
+            else w = fan_.sample(c.x, c.y, k, evaluations);
+        } else {
+            w = fan_.sample(c.x, c.y, k, evaluations);
+        }
+        w = detail::safe_normalize(w);
         // A sample on the horizon (u on the border of the square with a vertex at z = 0) has
         // density 0: move it into the triangle by the smallest power-of-16 multiple of epsilon
         // that makes it positive (a bias confined to a set of measure ~epsilon).
@@ -144,16 +225,17 @@ class projected_polygon_sampler {
     /// nearest point of the square for w outside.
     LTC_HOST_DEVICE vec2 invert(const vec3& w) const {
         if (empty()) return vec2(T(0));
-        // The fan triangle whose angle at the apex holds w.
-        std::size_t k = 0;
-        for (; k + 1 < count_; ++k) {
-            const detail::projected_triangle<T>& t = tris_[k];
-            const vec3 wa = w - t.a;
-            if (std::atan2(glm::dot(wa, t.t_c), glm::dot(wa, t.t_b)) <= t.alpha) break;
+        if constexpr (widens) {
+            if (wide_) return vec2(wide_fan_.invert(glm::vec<3, Wide>(w)));
         }
-        const vec2 local = tris_[k].invert(w);
-        const T below = k > 0 ? cdf_[k - 1] : T(0);
-        return vec2(glm::clamp((below + local.x * tris_[k].mass) / total_, T(0), T(1)), local.y);
+        return fan_.invert(w);
+    }
+
+    /// A direction inside the polygon (the normalized sum of its vertices; convex polygon).
+    LTC_HOST_DEVICE vec3 interior() const {
+        vec3 c(T(0));
+        for (std::size_t i = 0; i < vertex_count_; ++i) c += v_[i];
+        return detail::safe_normalize(c);
     }
 
     /// The clipped polygon's unit vertices (for tests and visualisation).
@@ -161,13 +243,14 @@ class projected_polygon_sampler {
     LTC_HOST_DEVICE const vec3& vertex(std::size_t i) const { return v_[i]; }
 
   private:
+    static constexpr bool widens = !std::is_same_v<T, Wide>;
     vec3 v_[capacity]{};
     vec3 edge_normal_[capacity]{};
-    detail::projected_triangle<T> tris_[capacity - 2]{};
-    T cdf_[capacity - 2]{};
-    std::size_t count_ = 0, vertex_count_ = 0;
+    detail::projected_fan<T, capacity - 2> fan_;
+    std::conditional_t<widens, detail::projected_fan<Wide, capacity - 2>, detail::no_fan> wide_fan_;
+    std::size_t vertex_count_ = 0;
     T total_{0};
-    T orientation_{1};
+    bool wide_ = false;
 };
 
 }  // namespace ltc

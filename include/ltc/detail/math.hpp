@@ -66,6 +66,12 @@ LTC_HOST_DEVICE inline glm::vec<3, T> rescale_pow2(const glm::vec<3, T>& v) {
     return glm::vec<3, T>(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
 }
 
+/// v times 2^e, exactly (barring over- or underflow of the result).
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> rescale_by(const glm::vec<3, T>& v, int e) {
+    return glm::vec<3, T>(std::ldexp(v.x, e), std::ldexp(v.y, e), std::ldexp(v.z, e));
+}
+
 /// m times the power of two that brings its largest entry into [1, 2): exact, as rescale_pow2 of a
 /// vector (m * v then has the direction of the original product, without its overflow).
 template <typename T>

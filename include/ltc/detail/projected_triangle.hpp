@@ -88,6 +88,7 @@ struct projected_triangle {
     T beta_b{0};          // position(1, 0): b on the great circle bc
     T sign{1};            // makes F increasing
     T mass{0};            // F(alpha): the triangle's projected solid angle
+    T condition{0};       // (sum of the edge terms' magnitudes) / mass: F's relative error / epsilon
     T slope_0{0}, slope_alpha{0};  // F'(0), F'(alpha): the start of the psi solve
 
     struct point {
@@ -124,6 +125,7 @@ struct projected_triangle {
         sign = end.value < T(0) ? T(-1) : T(1);
         mass = std::abs(end.value);
         if (!std::isfinite(mass)) mass = T(0);
+        condition = mass > T(0) ? end.scale / mass : T(0);
         slope_0 = wedge<T>(theta_ab, std::sin(theta_ab), std::cos(theta_ab), a.z, t_b.z).mass;
         slope_alpha = wedge_at(end).mass;
     }
