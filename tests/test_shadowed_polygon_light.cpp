@@ -10,7 +10,7 @@
 //       - the specular ratio estimates int_vis f / int_P f (f the GGX lobe), the unbiased
 //         estimate int_vis f (F0 = 1, so that Schlick's factor is 1), both against the
 //         library's Monte Carlo ground truth;
-//       for both samplers. Tolerances: 4 standard errors of the mean over R independent
+//       for the three sample plans (LTC with area or cosine diffuse samples, area alone). Tolerances: 4 standard errors of the mean over R independent
 //       Cranley-Patterson shifts (sigma from the spread of the R results) and of the ground
 //       truth. The ratio estimator's bias is O(1/K) (delta method: about CV^2 / K relative, CV
 //       the coefficient of variation of f / p), against a standard error of CV / sqrt(K R): the
@@ -94,12 +94,13 @@ TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly
     const auto [view, roughness] = GENERATE(table<float, float>({{0, 0.1f}, {40, 0.3f}, {70, 0.6f}, {85, 1.0f}}));
     const scene s = make_scene(view, roughness);
     const auto always = [](const glm::vec3&, const glm::vec3&, float) { return true; };
-    for (auto sampler : {ltc::shadow_sampler::ltc_polygon, ltc::shadow_sampler::light_area})
+    for (int plan = 0; plan < 3; ++plan)
         for (std::size_t K : {1u, 4u, 16u}) {
-            CAPTURE(view, roughness, int(sampler), K);
+            CAPTURE(view, roughness, plan, K);
             ltc::shadow_options<float> o;
             o.samples = K;
-            o.sampler = sampler;
+            o.sampler = plan < 2 ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
+            o.diffuse = plan == 1 ? ltc::diffuse_sampler::cosine : ltc::diffuse_sampler::light_area;
             o.rotation = glm::vec2(0.3f, 0.7f);
             const auto r = shade(s, glm::vec3(0.04f), always, o);
             REQUIRE(r.unshadowed.specular.x > 0.0f);
@@ -170,12 +171,14 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
     REQUIRE(truth_ratio > 0.1);
     REQUIRE(truth_ratio < 0.9);
 
-    for (auto sampler : {ltc::shadow_sampler::ltc_polygon, ltc::shadow_sampler::light_area}) {
-        CAPTURE(view, roughness, int(sampler), e_vis / e_all, truth_ratio);
+    for (int plan = 0; plan < 3; ++plan) {
+        const auto sampler = plan < 2 ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
+        CAPTURE(view, roughness, plan, e_vis / e_all, truth_ratio);
         const int R = 16;
         ltc::shadow_options<float> o;
         o.samples = 1024;
         o.sampler = sampler;
+        o.diffuse = plan == 1 ? ltc::diffuse_sampler::cosine : ltc::diffuse_sampler::light_area;
         const auto run = [&](const glm::vec2& shift) {
             o.rotation = shift;
             return shade(s, glm::vec3(1.0f), visible, o);
@@ -196,7 +199,7 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         const double want = kRadiance.x * t_vis.mean;
         CHECK(std::abs(unbiased.mean - want) <=
               4 * std::hypot(unbiased.error, kRadiance.x * t_vis.standard_error) + 1e-4 * want);
-        if (sampler == ltc::shadow_sampler::ltc_polygon) {
+        if (plan == 1) {
             // Exact samplers: the diffuse ratio's spread is the lattice's and the lobes' mismatch,
             // below a binomial's sqrt(p (1 - p) / K) ~ 0.016.
             CHECK(diffuse.error * std::sqrt(double(R)) < 0.016);

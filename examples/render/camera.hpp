@@ -3,6 +3,7 @@
 // light's front, with its texture coordinates; or nothing).
 #pragma once
 
+#include "common/pinhole.hpp"
 #include "lights.hpp"
 #include "math.hpp"
 #include "scene.hpp"
@@ -37,16 +38,10 @@ inline bool inside_polygon(const std::vector<glm::vec2>& poly, glm::vec2 q) {  /
 
 inline std::vector<pixel_hit> trace_camera(const scene& s, int width, int height) {
     std::vector<pixel_hit> hits(static_cast<std::size_t>(width) * height);
-    const vec3 forward = glm::normalize(s.target - s.eye);
-    const vec3 right = glm::normalize(glm::cross(forward, vec3(0, 0, 1)));
-    const vec3 up = glm::cross(right, forward);
-    const float h = std::tan(0.5f * s.vfov_deg * static_cast<float>(deg));
-    const float w = h * static_cast<float>(width) / static_cast<float>(height);
+    const pinhole camera(s.eye, s.target, s.vfov_deg, width, height);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            const float sx = (2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(width) - 1.0f) * w;
-            const float sy = (1.0f - 2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(height)) * h;
-            const vec3 d = glm::normalize(forward + sx * right + sy * up);
+            const vec3 d = camera.direction(x, y);
             pixel_hit& hit = hits[static_cast<std::size_t>(y) * width + x];
             float t_best = INFINITY;
             if (d.z < 0) {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "camera.hpp"
-#include "colour.hpp"
+#include "common/colour.hpp"
 #include "math.hpp"
 #include "scene.hpp"
 

@@ -4,7 +4,7 @@
 // render, paper sections 5.2-5.4) and its texel-luminance sampling density (for the reference).
 #pragma once
 
-#include "image.hpp"
+#include "common/image.hpp"
 #include "math.hpp"
 
 #include <ltc/reference/textured_ground_truth.hpp>

@@ -5,11 +5,11 @@
 #pragma once
 
 #include "camera.hpp"
+#include "common/threads.hpp"
 #include "math.hpp"
 #include "scene.hpp"
 #include "shade_ltc.hpp"
 #include "textured_methods.hpp"
-#include "threads.hpp"
 
 #include <algorithm>
 #include <cmath>

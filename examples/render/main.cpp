@@ -128,18 +128,22 @@
 // <stb/stb_image.h>).
 //
 // Source files (examples/render/): options.hpp (the command line), scene.hpp (floor, materials,
-// camera placement) and lights.hpp (the lights), image.hpp (texture files in, PNGs out, through
-// stb.hpp / stb.cpp) and stained_glass.hpp (the default picture), camera.hpp (what each pixel
-// sees), shade_ltc.hpp and shade_reference.hpp (the two renders; one pixel), ltc_timing.hpp (the
-// timed LTC render of the polygonal lights), textured_methods.hpp (the textured light by each
-// method), reference_render.hpp (the timed reference render), colour.hpp (luminance, tone
-// mapping, false colour), error_stats.hpp (the statistics) and report.hpp (the error images and
-// printed statistics), threads.hpp (rows on worker threads, progress bar), and this file: the
-// top-level flow.
+// camera placement) and lights.hpp (the lights), stained_glass.hpp (the default picture),
+// camera.hpp (what each pixel sees), shade_ltc.hpp and shade_reference.hpp (the two renders; one
+// pixel), ltc_timing.hpp (the timed LTC render of the polygonal lights), textured_methods.hpp (the
+// textured light by each method), reference_render.hpp (the timed reference render),
+// error_stats.hpp (the statistics) and report.hpp (the error images and printed statistics),
+// math.hpp (the shared pieces by their plain names), and this file: the top-level flow. Shared
+// with the shadows example (examples/common/): cli.hpp (the command line's common options and
+// loop, the output directory), colour.hpp (luminance, tone mapping, false colour), image.hpp
+// (texture files in, PNGs out, through stb.hpp / stb.cpp), math.hpp, pinhole.hpp (the camera's
+// rays), random.hpp (seeds), threads.hpp (rows on worker threads, progress bar).
 #include "camera.hpp"
-#include "colour.hpp"
+#include "common/cli.hpp"
+#include "common/colour.hpp"
+#include "common/image.hpp"
+#include "common/threads.hpp"
 #include "error_stats.hpp"
-#include "image.hpp"
 #include "lights.hpp"
 #include "ltc_timing.hpp"
 #include "math.hpp"
@@ -150,17 +154,13 @@
 #include "shapes_render.hpp"
 #include "stained_glass.hpp"
 #include "textured_methods.hpp"
-#include "threads.hpp"
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
-#include <system_error>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -169,17 +169,11 @@ using namespace render;  // the pieces above
 int main(int argc, char** argv) {
     options opt;
     if (const int r = parse_args(argc, argv, opt); r != 0) return r == 1 ? 0 : 2;
-    if (opt.threads == 0) opt.threads = std::max(1u, std::thread::hardware_concurrency());
     const int W = opt.width, H = opt.height;
     const std::size_t count = static_cast<std::size_t>(W) * H;
 
-    std::error_code ec;
     const std::filesystem::path out_dir(opt.out);
-    std::filesystem::create_directories(out_dir, ec);
-    if (!std::filesystem::is_directory(out_dir, ec)) {
-        std::fprintf(stderr, "error: cannot create the output directory %s\n", opt.out.c_str());
-        return 1;
-    }
+    if (!create_output_directory(out_dir)) return 1;
 
     scene s;
     double prefilter_seconds = 0;

@@ -1,13 +1,12 @@
-// render/math.hpp -- the vector types and angle constants that every piece of the renderer uses.
+// render/math.hpp -- what every piece of the renderer uses: the vector types and angle constants
+// of examples/common/math.hpp, and the helpers it shares with the shadows example
+// (examples/common/: colour, images, seeds, threads, the command line) by their plain names.
 #pragma once
 
-#include <glm/glm.hpp>
+#include "common/math.hpp"
 
 namespace render {
 
-using glm::dvec3;
-using glm::vec3;
-constexpr double pi = 3.141592653589793;
-constexpr double deg = pi / 180.0;
+using namespace ltc_examples;
 
 }  // namespace render

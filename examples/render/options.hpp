@@ -1,13 +1,12 @@
 // render/options.hpp -- the command line: the options, their defaults, --help and the parser.
 #pragma once
 
+#include "common/cli.hpp"
+
 #include <ltc/shading/textured_light.hpp>
 
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -22,14 +21,9 @@ inline const char* method_name(ltc::textured_method m) {
     }
 }
 
-struct options {
-    int width = 256;
-    int height = 160;
+struct options : ltc_examples::image_options {  // --width, --height, --threads, --out, --seed, --exposure
+    options() : image_options(256, 160) {}
     int spp = 2048;  // MIS iterations per pixel, light and integral
-    unsigned threads = 0;  // 0: all hardware threads
-    std::string out = ".";
-    double exposure = 1.0;
-    std::uint64_t seed = 1;
     bool textured = true;      // the textured light (--no-texture: the two polygonal lights only)
     std::string texture;       // image file of the textured light; empty: the stained glass
     double texture_radiance = 8.0;  // radiance of a white texel
@@ -119,62 +113,27 @@ inline void print_help(const char* argv0) {
         argv0);
 }
 
-inline bool parse_number(const char* s, double& v) {
-    char* end = nullptr;
-    v = std::strtod(s, &end);
-    return end != s && *end == '\0' && std::isfinite(v);
-}
-
-/// Returns 0 to go on, 1 after --help, 2 on an error.
+/// Returns 0 to go on, 1 after --help, 2 on an error (common/cli.hpp).
 inline int parse_args(int argc, char** argv, options& o) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h") {
-            print_help(argv[0]);
-            return 1;
-        }
-        if (a == "--shapes") {
+    using ltc_examples::option_status;
+    const auto flag = [&](const std::string& a) {  // the options without a value
+        if (a == "--shapes")
             o.shapes = true;
-            continue;
-        }
-        if (a == "--no-texture") {
+        else if (a == "--no-texture")
             o.textured = false;
-            continue;
-        }
-        if (i + 1 >= argc) {
-            std::fprintf(stderr, "%s: unknown option or missing value: %s (see --help)\n", argv[0], a.c_str());
-            return 2;
-        }
-        const char* value = argv[++i];
-        double v = 0;
-        const bool number = parse_number(value, v);
-        const bool integer = number && v == std::floor(v);
-        const auto bad = [&] {
-            std::fprintf(stderr, "%s: bad value for %s: %s\n", argv[0], a.c_str(), value);
-            return 2;
-        };
-        if (a == "--width" || a == "--height") {
-            if (!integer || v < 1 || v > 16384) return bad();
-            (a == "--width" ? o.width : o.height) = static_cast<int>(v);
-        } else if (a == "--spp") {
-            if (!integer || v < 0 || v > 1e8) return bad();
-            o.spp = static_cast<int>(v);
-        } else if (a == "--threads") {
-            if (!integer || v < 1 || v > 1024) return bad();
-            o.threads = static_cast<unsigned>(v);
-        } else if (a == "--exposure") {
-            if (!number || !(v > 0)) return bad();
-            o.exposure = v;
-        } else if (a == "--seed") {
-            if (!integer || v < 0 || v > 9e15) return bad();
-            o.seed = static_cast<std::uint64_t>(v);
-        } else if (a == "--out") {
-            o.out = value;
+        else
+            return false;
+        return true;
+    };
+    const auto option = [&](const std::string& a, const ltc_examples::option_value& v) {
+        if (a == "--spp") {
+            if (!v.integer_in(0, 1e8)) return option_status::bad;
+            o.spp = static_cast<int>(v.number);
         } else if (a == "--texture") {
-            o.texture = value;
+            o.texture = v.text;
             o.textured = true;
         } else if (a == "--textured-method") {
-            const std::string m = value;
+            const std::string m = v.text;
             if (m == "all")
                 o.textured_methods = {ltc::textured_method::fetch, ltc::textured_method::quick_cells,
                                       ltc::textured_method::exact_cells};
@@ -183,19 +142,19 @@ inline int parse_args(int argc, char** argv, options& o) {
                                       : m == "quick_cells" ? ltc::textured_method::quick_cells
                                                            : ltc::textured_method::exact_cells};
             else
-                return bad();
+                return option_status::bad;
         } else if (a == "--cells") {
-            if (!integer || v < 1 || v > 1e7) return bad();
-            o.cells = static_cast<std::size_t>(v);
+            if (!v.integer_in(1, 1e7)) return option_status::bad;
+            o.cells = static_cast<std::size_t>(v.number);
         } else if (a == "--texture-radiance") {
-            if (!number || !(v >= 0) || v > 1e6) return bad();
-            o.texture_radiance = v;
+            if (!v.is_number || !(v.number >= 0) || v.number > 1e6) return option_status::bad;
+            o.texture_radiance = v.number;
         } else {
-            std::fprintf(stderr, "%s: unknown option: %s (see --help)\n", argv[0], a.c_str());
-            return 2;
+            return option_status::unknown;
         }
-    }
-    return 0;
+        return option_status::taken;
+    };
+    return ltc_examples::parse_command_line(argc, argv, o, print_help, flag, option);
 }
 
 }  // namespace render

@@ -5,12 +5,12 @@
 #pragma once
 
 #include "camera.hpp"
+#include "common/threads.hpp"
 #include "error_stats.hpp"
 #include "math.hpp"
 #include "options.hpp"
 #include "scene.hpp"
 #include "shade_reference.hpp"
-#include "threads.hpp"
 
 #include <cmath>
 #include <cstddef>

@@ -6,8 +6,8 @@
 #pragma once
 
 #include "camera.hpp"
+#include "common/image.hpp"
 #include "error_stats.hpp"
-#include "image.hpp"
 #include "math.hpp"
 #include "options.hpp"
 #include "reference_render.hpp"

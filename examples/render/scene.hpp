@@ -3,7 +3,7 @@
 // and, optionally, the textured light (see main.cpp's file comment for the layout).
 #pragma once
 
-#include "image.hpp"
+#include "common/image.hpp"
 #include "lights.hpp"
 #include "math.hpp"
 

@@ -6,7 +6,8 @@
 #pragma once
 
 #include "camera.hpp"
-#include "colour.hpp"
+#include "common/colour.hpp"
+#include "common/random.hpp"
 #include "lights.hpp"
 #include "math.hpp"
 #include "scene.hpp"
@@ -40,13 +41,6 @@ struct ggx_schlick_weight {
     static double pdf(const dvec3& V, const dvec3& L, double alpha) { return model::pdf(V, L, alpha); }
     static dvec3 sample(const dvec3& V, const glm::dvec2& u, double alpha) { return model::sample(V, u, alpha); }
 };
-
-inline std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b) {  // SplitMix64 finalizer of a combination
-    std::uint64_t z = a * 0x9E3779B97F4A7C15ull + b + 0x632BE59BD9B4E019ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
 
 struct reference_pixel {
     dvec3 radiance{0.0};  // the polygonal lights (and their emitters)

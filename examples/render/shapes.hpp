@@ -18,7 +18,7 @@
 #pragma once
 
 #include "camera.hpp"
-#include "colour.hpp"
+#include "common/colour.hpp"
 #include "math.hpp"
 #include "scene.hpp"
 #include "shade_reference.hpp"

@@ -7,15 +7,15 @@
 #pragma once
 
 #include "camera.hpp"
-#include "colour.hpp"
+#include "common/colour.hpp"
+#include "common/image.hpp"
+#include "common/threads.hpp"
 #include "error_stats.hpp"
-#include "image.hpp"
 #include "math.hpp"
 #include "options.hpp"
 #include "scene.hpp"
 #include "shade_reference.hpp"
 #include "shapes.hpp"
-#include "threads.hpp"
 
 #include <algorithm>
 #include <cmath>

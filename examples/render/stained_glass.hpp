@@ -3,8 +3,8 @@
 // surround), deterministic (hashes, no RNG state).
 #pragma once
 
-#include "colour.hpp"
-#include "image.hpp"
+#include "common/colour.hpp"
+#include "common/image.hpp"
 #include "math.hpp"
 
 #include <glm/glm.hpp>

@@ -5,12 +5,12 @@
 #pragma once
 
 #include "camera.hpp"
+#include "common/threads.hpp"
 #include "error_stats.hpp"
 #include "math.hpp"
 #include "options.hpp"
 #include "scene.hpp"
 #include "shade_ltc.hpp"
-#include "threads.hpp"
 
 #include <ltc/shading/textured_light.hpp>
 

@@ -5,11 +5,13 @@
 // CPU runs) agrees with the scalar path; and the textured lights (fuzz_textured.hpp: tiny
 // textures, the exact cell integrals with fuzzed budgets and tolerances, textured shading with
 // every method) give finite results, non-negative for non-negative textures, with finite,
-// non-negative error bounds. Build: clang++ -std=c++17 -g -O1
-// -fsanitize=fuzzer,address,undefined -I include tests/fuzz/fuzz_integrals.cpp; run on
-// tests/fuzz/corpus (see .ci/run).
+// non-negative error bounds; and the polygon samplers (fuzz_sampling.hpp: projected solid angle,
+// restricted LTC, light area) give finite directions, densities and inverses. Build: clang++
+// -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -I include tests/fuzz/fuzz_integrals.cpp;
+// run on tests/fuzz/corpus (see .ci/run).
 #include "fuzz_batch.hpp"
 #include "fuzz_common.hpp"
+#include "fuzz_sampling.hpp"
 #include "fuzz_shapes.hpp"
 #include "fuzz_textured.hpp"
 
@@ -30,7 +32,8 @@
 
 namespace {
 
-using namespace ltc_fuzz;  // fuzz_common.hpp, fuzz_batch.hpp, fuzz_textured.hpp, fuzz_shapes.hpp
+// fuzz_common.hpp, fuzz_batch.hpp, fuzz_textured.hpp, fuzz_shapes.hpp, fuzz_sampling.hpp
+using namespace ltc_fuzz;
 
 template <typename T, typename Dist>
 void check_distribution(const glm::vec<3, T>* v, std::size_t n, const glm::mat<3, 3, T>& m, bool use_inverse,
@@ -99,6 +102,7 @@ void run(FuzzedDataProvider& in) {
     check_batch<T>(in, m, v);
     check_textured<T>(in, m, v, P, N, V, roughness);
     check_shapes<T>(in, m, v, P, N, V, roughness);
+    check_sampling<T>(in, m, v);
 }
 
 }  // namespace

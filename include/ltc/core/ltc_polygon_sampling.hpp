@@ -47,11 +47,18 @@ class ltc_polygon_sampler {
         const detail::transformed_vertices<T> to_cosine{m_inv_, vertices};
         for (std::size_t i = 0; i < n; ++i) local[i] = to_cosine(i);
         cosine_ = projected_polygon_sampler<T, MaxVertices>(local, n);
+        // A numerically degenerate M can map even the polygon's interior outside it and back:
+        // then no sample could have pdf > 0, and the polygon counts as empty.
+        if (!cosine_.empty()) {
+            inside_ = detail::safe_normalize(m_ * cosine_.interior());
+            usable_ = density(inside_) > T(0);
+        }
     }
 
-    LTC_HOST_DEVICE bool empty() const { return cosine_.empty(); }
+    LTC_HOST_DEVICE bool empty() const { return !usable_; }
 
-    /// I_D: the integral of D over the polygon (the clamped cosine's over M^-1 P, clipped).
+    /// I_D: the integral of D over the polygon (the clamped cosine's over M^-1 P, clipped; also
+    /// for an empty() sampler whose M is too degenerate to sample through).
     LTC_HOST_DEVICE T integral() const { return cosine_.projected_solid_angle() / pi<T>(); }
 
     /// A direction with density D(w) / I_D in the polygon, and that density.
@@ -66,8 +73,8 @@ class ltc_polygon_sampler {
     /// it back (as transformed<>::sample does; a bias confined to a set of measure ~cond(M)
     /// epsilon).
     LTC_HOST_DEVICE polygon_sample<T> sample(const vec2& u, int& evaluations) const {
+        if (empty()) return polygon_sample<T>{};  // pdf 0
         polygon_sample<T> x = cosine_.sample(u, evaluations);
-        if (empty()) return x;  // pdf 0
         vec3 wo = x.direction;
         x.direction = detail::safe_normalize(m_ * wo);
         x.pdf = pdf(x.direction);
@@ -79,20 +86,23 @@ class ltc_polygon_sampler {
                 x.direction = detail::safe_normalize(m_ * wo);
                 x.pdf = pdf(x.direction);
             }
+            // Where no lift helps (M near singular): the image of the interior, checked usable.
+            if (!(x.pdf > T(0))) x.direction = inside_, x.pdf = pdf(inside_);
         }
         return x;
     }
 
     /// Density of sample() at the unit direction w: D(w) / I_D inside the polygon, else 0.
-    LTC_HOST_DEVICE T pdf(const vec3& w) const {
-        const vec3 q = m_inv_ * w;
-        return cosine_.pdf(detail::safe_normalize(q)) * jacobian(w);
-    }
+    LTC_HOST_DEVICE T pdf(const vec3& w) const { return usable_ ? density(w) : T(0); }
 
     /// u with sample(u).direction == w (up to rounding), for w in the polygon.
     LTC_HOST_DEVICE vec2 invert(const vec3& w) const { return cosine_.invert(detail::safe_normalize(m_inv_ * w)); }
 
   private:
+    LTC_HOST_DEVICE T density(const vec3& w) const {
+        return cosine_.pdf(detail::safe_normalize(m_inv_ * w)) * jacobian(w);
+    }
+
     // |M^-1| / |M^-1 w|^3 (transformed<>::jacobian).
     LTC_HOST_DEVICE T jacobian(const vec3& w) const {
         const T l = glm::length(m_inv_ * w);
@@ -101,6 +111,8 @@ class ltc_polygon_sampler {
 
     mat3 m_inv_{T(1)}, m_{T(1)};
     T abs_det_inv_{1};
+    vec3 inside_{T(0), T(0), T(1)};  // M (the clipped M^-1 P's interior direction)
+    bool usable_ = false;
     projected_polygon_sampler<T, MaxVertices> cosine_;
 };
 

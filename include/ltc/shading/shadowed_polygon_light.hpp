@@ -15,18 +15,21 @@
 //   glm::vec3 colour = r.ratio.specular + r.ratio.diffuse;
 //
 // Samples (shadow_sampler), K in all, one visibility query each, every sample serving both terms:
-//   ltc_polygon  the exact samplers of the two lobes restricted to the polygon: the LTC, density
-//                D / I_D (ltc/core/ltc_polygon_sampling.hpp), and the clamped cosine, density
-//                cos / E (ltc/core/projected_solid_angle_sampling.hpp), the K samples split
-//                between them in proportion to the specular and diffuse shares of the analytic
-//                result, and weighted by the balance heuristic over the whole plan (multi-sample
-//                MIS, Veach 1997 eq. 9.13: f / (K_s D / I_D + K_d cos / E), both normalizers known
-//                in closed form). Where the light is unoccluded the ratio is exactly 1 (the
-//                analytic result, without noise); a term whose own sampler takes all K samples
-//                has f / p nearly constant (exactly, for the diffuse term), so its ratio is close
-//                to the visible fraction of the samples, with little other noise.
+//   ltc_polygon  the specular share from the exact sampler of the LTC restricted to the polygon,
+//                density D / I_D (ltc/core/ltc_polygon_sampling.hpp), the diffuse share from
+//                options.diffuse: light_area (the default: uniform on the light, cheap) or cosine
+//                (the clamped cosine restricted to the polygon, exact, density cos / E:
+//                ltc/core/projected_solid_angle_sampling.hpp; ~15x the cost per sample, worth it
+//                only for lights close to or grazing the surface). The K samples are split in
+//                proportion to the specular and diffuse shares of the analytic result and
+//                weighted by the balance heuristic over the whole plan (multi-sample MIS, Veach
+//                1997 eq. 9.13: f / (K_s D / I_D + K_d p_d), the normalizers in closed form).
+//                Where the light is unoccluded the ratio is exactly 1 (the analytic result,
+//                without noise); where the LTC takes all K samples, f / p varies only by the
+//                GGX/LTC mismatch, so the ratio is close to the visible fraction of the samples.
 //   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
-//                density |x - P|^2 / (A |cos theta_x|): the common renderer baseline.
+//                density |x - P|^2 / (A |cos theta_x|), for both terms: the common renderer
+//                baseline.
 // f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/fitting/brdf/ggx.hpp,
 // alpha = roughness^2) for the specular term, cos / pi for the diffuse one; the ratio corrects
 // the analytic result for visibility only. The directions are a rank-1 lattice, (k + 1/2) / K
@@ -62,12 +65,15 @@
 namespace ltc {
 
 enum class shadow_sampler { ltc_polygon, light_area };
+/// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
+enum class diffuse_sampler { light_area, cosine };
 
 template <typename T>
 struct shadow_options {
     std::size_t samples = 4;        ///< K: directions (visibility queries) per call
     glm::vec<2, T> rotation{T(0)};  ///< Cranley-Patterson shift in [0, 1)^2, random per pixel
     shadow_sampler sampler = shadow_sampler::ltc_polygon;
+    diffuse_sampler diffuse = diffuse_sampler::light_area;
 };
 
 template <typename T>
@@ -160,22 +166,31 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         if (!(i_d > T(0))) ks = 0;
         if (!(e > T(0))) ks = K;
         const std::size_t kd = K - ks;
+        const bool cosine = options.diffuse == diffuse_sampler::cosine;
         ltc_polygon_sampler<T, max_vertices> lobe_sampler;
         projected_polygon_sampler<T, max_vertices> cosine_sampler;
         if (ks > 0) lobe_sampler = ltc_polygon_sampler<T, max_vertices>(d, local, n);
-        if (kd > 0) cosine_sampler = projected_polygon_sampler<T, max_vertices>(local, n);
-        const auto density = [&](const vec3& l) {
-            return (ks > 0 ? T(ks) * d.eval(l) / i_d : T(0)) + (kd > 0 ? T(kd) * glm::max(l.z, T(0)) / e : T(0));
+        if (kd > 0 && cosine) cosine_sampler = projected_polygon_sampler<T, max_vertices>(local, n);
+        // The plan's density at l (world w, the light's plane at distance t along it).
+        const auto density = [&](const vec3& l, const vec3& w, T t) {
+            T p = ks > 0 ? T(ks) * d.eval(l) / i_d : T(0);
+            if (kd > 0) p += T(kd) * (cosine ? glm::max(l.z, T(0)) / e : plane.solid_angle_pdf(P, P + w * t));
+            return p;
         };
-        for (std::size_t k = 0; k < ks && !lobe_sampler.empty(); ++k) {
-            const vec3 l = lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation)).direction;
+        const auto add_local = [&](const vec3& l) {
             const vec3 w = to_world(l);
-            add(l, w, plane_distance(w), density(l));
-        }
-        for (std::size_t k = 0; k < kd && !cosine_sampler.empty(); ++k) {
-            const vec3 l = cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation)).direction;
-            const vec3 w = to_world(l);
-            add(l, w, plane_distance(w), density(l));
+            const T t = plane_distance(w);
+            add(l, w, t, density(l, w, t));
+        };
+        for (std::size_t k = 0; k < ks && !lobe_sampler.empty(); ++k)
+            add_local(lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation)).direction);
+        for (std::size_t k = 0; k < kd && cosine && !cosine_sampler.empty(); ++k)
+            add_local(cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation)).direction);
+        for (std::size_t k = 0; k < kd && !cosine && !plane.empty(); ++k) {
+            const vec3 x = plane.sample(detail::lattice_point(k, kd, options.rotation));
+            const vec3 w = detail::safe_normalize(x - P);
+            const vec3 l = frame.to_local(w);
+            add(l, w, glm::length(x - P), density(l, w, glm::length(x - P)));
         }
     } else {
         for (std::size_t k = 0; k < K && !plane.empty(); ++k) {

@@ -1,4 +1,4 @@
-// render/threads.hpp -- timing and threads: seconds since a time point, and rows of an image
+// common/threads.hpp -- timing and threads: seconds since a time point, and rows of an image
 // shaded on worker threads with an optional progress bar (with an ETA) on stderr.
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-namespace render {
+namespace ltc_examples {
 
 using clock_type = std::chrono::steady_clock;
 
@@ -63,4 +63,4 @@ void for_each_row(int height, unsigned threads, Row&& row, const char* label = n
     for (auto& t : pool) t.join();
 }
 
-}  // namespace render
+}  // namespace ltc_examples

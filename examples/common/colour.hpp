@@ -1,6 +1,6 @@
-// render/colour.hpp -- colour arithmetic: Rec. 709 luminance, sRGB decoding and encoding, the tone
-// curve (exposure, ACES filmic curve of Narkowicz 2015, sRGB, 8 bits) and error.png's false-colour
-// scale.
+// common/colour.hpp -- colour arithmetic: Rec. 709 luminance, sRGB decoding and encoding, the tone
+// curve (exposure, ACES filmic curve of Narkowicz 2015, sRGB, 8 bits) and the false-colour scale of
+// the error images.
 #pragma once
 
 #include "math.hpp"
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace render {
+namespace ltc_examples {
 
 constexpr double lum_r = 0.2126, lum_g = 0.7152, lum_b = 0.0722;  // Rec. 709 luminance
 inline double luminance(const dvec3& c) { return lum_r * c.r + lum_g * c.g + lum_b * c.b; }
@@ -49,4 +49,4 @@ inline void error_colour(double e, std::uint8_t* rgb) {
     for (int c = 0; c < 3; ++c) rgb[c] = to_byte(stops[i][c] * (1 - f) + stops[i + 1][c] * f);
 }
 
-}  // namespace render
+}  // namespace ltc_examples

@@ -1,4 +1,4 @@
-// render/stb.hpp -- stb_image_write and stb_image (Debian: libstb-dev, <stb/stb_image_write.h>,
+// common/stb.hpp -- stb_image_write and stb_image (Debian: libstb-dev, <stb/stb_image_write.h>,
 // <stb/stb_image.h>): their declarations here, their implementations in stb.cpp (the one
 // translation unit that holds them). GCC 12 and Clang 14 give no warning for them under -Wall
 // -Wextra -Wpedantic; older or newer releases of the headers have tripped these, so they are

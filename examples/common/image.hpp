@@ -1,4 +1,4 @@
-// render/image.hpp -- images in and out: the linear-RGB image of the textured light, read from a
+// common/image.hpp -- images in and out: a linear-RGB image (render's textured light), read from a
 // file with stb_image (sRGB to linear, times alpha, box-filtered down to 1024 texels a side), and
 // 8-bit RGB PNGs written with stb_image_write.
 #pragma once
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace render {
+namespace ltc_examples {
 
 /// A linear-RGB image, row-major, row 0 first (v = 0 at the top of the light).
 struct image {
@@ -67,4 +67,4 @@ inline bool write_png(const std::filesystem::path& path, int width, int height, 
     return true;
 }
 
-}  // namespace render
+}  // namespace ltc_examples

@@ -1,0 +1,190 @@
+// shadows -- a small CPU renderer with real shadows, traced by Embree 3: LTC shading with
+// ratio-estimator shadows (ltc::shade_polygon_light_shadowed) against plain Monte Carlo.
+//
+//   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
+//           [--mis-spp LIST] [--reference-spp N] [--threads K] [--out DIR] [--seed S]
+//           [--exposure E] [--help]
+//
+// The scene (z up; scene.hpp), every surface triangles of one Embree scene (tracer.hpp): a floor
+// of unit tiles, GGX dielectrics (F0 = 0.04, Lambertian albedo 0.5) of roughness 0.15, 0.3 and
+// 0.6 in diagonals, and one column of gold tiles (the same roughnesses, no diffuse); one
+// one-sided 2.6 x 1.0 quad light of constant radiance 3 units up, behind the occluders, facing
+// the camera and the floor; two rough grey occluders (roughness 0.5, F0 0.04, albedo 0.45): a
+// unit box standing on the floor (a contact shadow, hard at its base and softening away from it)
+// and a panel with a square hole, slanted 30 degrees sideways, 0.5 to 1.7 units up (narrow and
+// wide penumbrae, a soft spot of light through the hole). A pinhole camera, one ray per pixel
+// centre (camera.hpp), sees the floor, the occluders and the light (drawn as its radiance where
+// its front is seen, black from behind).
+//
+// Methods, each shading every floor and occluder pixel with the light's direct light:
+//   (a)  ratio_ltc   LTC + ratio-estimator shadows (Heitz, Hill and McGuire 2018): the analytic
+//                    unshadowed LTC (GGX table, Schlick's Fresnel) times, per term, the ratio of
+//                    the shadowed to the unshadowed Monte Carlo estimates over the same K samples,
+//                    one shadow ray each, split between the LTC restricted to the polygon and the
+//                    light's area in proportion to the specular and diffuse analytic shares and
+//                    combined by the balance heuristic (the library's default; shade_ratio.hpp);
+//   (a+) ratio_ltc_adaptive  (a) with an early stop, an experiment of this example: K0 = min(K, 4)
+//                    samples first; where both terms' ratios are exactly 0 or 1 (all samples
+//                    agreed: umbra, or fully lit), that result; else (a) again with K samples and
+//                    another rotation, and the two ratios averaged with weights K0 and K;
+//   (b)  ratio_area  the same ratio estimator, its K samples uniform over the light's area;
+//   (c)  mis         plain Monte Carlo with MIS: per iteration one BRDF sample (GGX visible
+//                    normals, or the cosine lobe) and one light-area sample, balance heuristic,
+//                    of GGX with Schlick's Fresnel plus Lambert: the BRDF the LTC approximates
+//                    (shade_mis.hpp).
+// "spp" is K for (a), (a+) and (b) and the iterations of (c): per pixel, (a) and (b) cast up to K
+// shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) up to K shadow and K BRDF rays
+// (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
+// direct lighting only, since the light is the only emitter and the floor's inter-reflection is
+// not what the methods compute. It is the direct light of the real BRDF, so (a)'s and (b)'s
+// errors include the LTC fit's as well as their shadows'.
+// (a+)'s average rather than the K-sample result alone: it uses all K0 + K rays paid for, and it
+// scales the early stop's bias by K / (K0 + K). Measured in the default run (the K-sample result
+// alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4, 8.7% (8.8%) at K = 16;
+// shift from (a), the early stop's bias, 5.7% (11.3%) and 7.2% (9.1%) RMS. That bias: where the
+// light is partly hidden, all K0 samples can still agree (for independent samples with
+// probability about v^K0 + (1 - v)^K0, v the visible fraction; the lattice lowers it, not to 0),
+// and the pixel then keeps 0 or 1: near-lit pixels turn lit and near-umbra ones dark, penumbrae
+// harden and small or thin occlusions (a sliver of the lobe hidden) vanish. It is not noise, and
+// more samples K do not remove it: the average keeps a share K / (K0 + K) of it, which grows to
+// all of it as K grows; only a larger K0 shrinks it.
+//
+// Written into --out (default: the current directory), tone mapped as render's images are
+// (exposure, ACES filmic curve, sRGB):
+//   reference.png         the reference
+//   M_Nspp.png            M = ratio_ltc, ratio_ltc_adaptive, ratio_area, mis; N = 1, 4, 16 (those
+//                         in the lists)
+//   error_M_4spp.png      |Y - Y_ref| / max(Y_ref, floor) in false colour (measure.hpp), over the
+//                         floor and the occluders
+//   error_vs_time.csv     method, spp, seconds, mean relative error, relative RMSE, rays per
+//                         pixel, CPU seconds, mean signed error, and the three errors over the
+//                         dielectric and over the gold tiles, for every spp of the lists (default
+//                         1 .. 64 for (a) and (a+), 1 .. 256 for (b) and (c));
+//                         plot_error_vs_time.py draws error_vs_time.png from it
+// Printed: the reference's time and its relative standard error; three tables, over all the floor
+// pixels, over the dielectric tiles and over the gold tiles, of each method and spp: the shading
+// time of the whole image (wall clock on --threads threads, the reference's excluded, and the CPU
+// time of the same runs: measure.hpp), rays per pixel and the errors (mean of |e| and RMS of e,
+// e = (Y - Y_ref) / max(Y_ref, 0.01 / exposure) of luminance, and mean signed e); the equal-time
+// ratios error(a)/error(x), error(b)/error(x), error(c)/error(x) at the times of x = (a) and
+// x = (a+) for K = 1, 4, 16, over all the floor by wall clock and by CPU time, over each material
+// by CPU time (report.hpp); and (a)'s and (a+)'s errors split into noise and bias by a second
+// render with other seeds at K = 1, 4, 16, with (a+)'s shift from (a).
+// The default run takes about 35 s on 2 idle cores (55 s of CPU time), most of it the reference.
+// Exit status 0, 1 if a file could not be written, Embree failed or a value was not finite, 2
+// for bad arguments.
+//
+// Dependencies: GLM, Embree 3 (Debian: libembree-dev), stb_image_write (libstb-dev); the pieces it
+// shares with render (examples/common/): cli.hpp, colour.hpp, image.hpp, math.hpp, pinhole.hpp,
+// random.hpp, stb.hpp / stb.cpp and threads.hpp.
+//
+// Source files (examples/shadows/): options.hpp (the command line), scene.hpp (geometry,
+// materials, camera), tracer.hpp (Embree: closest hits and shadow rays, their offsets),
+// camera.hpp (what each pixel sees), shade_ratio.hpp ((a), (a+), (b)), shade_mis.hpp ((c) and the
+// reference), measure.hpp (timed renders, errors by region, noise), report.hpp (CSV and tables),
+// this file (the flow), plot_error_vs_time.py (the figure).
+#include "camera.hpp"
+#include "common/cli.hpp"
+#include "common/colour.hpp"
+#include "common/image.hpp"
+#include "measure.hpp"
+#include "options.hpp"
+#include "report.hpp"
+#include "scene.hpp"
+#include "shade_ratio.hpp"
+#include "tracer.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace shadows;
+
+namespace {
+
+bool write_image(const std::filesystem::path& path, const std::vector<dvec3>& img, int W, int H, double exposure) {
+    std::vector<std::uint8_t> rgb(img.size() * 3);
+    for (std::size_t i = 0; i < img.size(); ++i) ltc_examples::tone_map(img[i], exposure, &rgb[3 * i]);
+    return ltc_examples::write_png(path, W, H, rgb);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    options opt;
+    if (const int r = parse_args(argc, argv, opt); r != 0) return r == 1 ? 0 : 2;
+    const int W = opt.width, H = opt.height;
+    const double dark_floor = 0.01 / opt.exposure;  // measure.hpp's floor
+    const std::filesystem::path out_dir(opt.out);
+    if (!ltc_examples::create_output_directory(out_dir)) return 1;
+
+    const scene s;
+    std::unique_ptr<tracer> tr;
+    try {
+        tr = std::make_unique<tracer>(s);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+    const std::vector<pixel_hit> hits = trace_camera(s, *tr, W, H);
+    std::size_t gold_pixels = 0, floor_pixels = 0, occluder_pixels = 0;
+    for (const pixel_hit& h : hits) {
+        floor_pixels += h.kind == pixel_hit::floor;
+        gold_pixels += in_region(h, region::gold);
+        occluder_pixels += h.kind == pixel_hit::occluder;
+    }
+    std::printf("%d x %d pixels (%zu floor: %zu dielectric, %zu gold; %zu occluder), %u thread%s\n", W, H,
+                floor_pixels, floor_pixels - gold_pixels, gold_pixels, occluder_pixels, opt.threads,
+                opt.threads == 1 ? "" : "s");
+
+    // The reference: (c) with its own seeds.
+    std::fflush(stdout);  // the progress bar goes to stderr
+    const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
+                                           mix_seed(opt.seed, 0x7EFu), 1, "reference");
+    std::size_t nonfinite = ref.nonfinite;
+    const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
+    std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "
+                "RMS %.2f%%\n",
+                opt.reference_spp, ref.seconds, 100 * ref_noise.mean, 100 * ref_noise.rms);
+    bool ok = write_image(out_dir / "reference.png", ref.img, W, H, opt.exposure);
+
+    // The sweep.
+    std::vector<sweep_row> rows;
+    std::vector<std::uint8_t> rgb(hits.size() * 3);
+    std::vector<seed_pair> pairs;  // (a) and (a+) at K = 1, 4, 16, for their noise below
+    const std::vector<int>* lists[] = {&opt.spp, &opt.adaptive_spp, &opt.area_spp, &opt.mis_spp};
+    const method methods[] = {method::ratio_ltc, method::ratio_ltc_adaptive, method::ratio_area, method::mis};
+    for (int k = 0; k < 4; ++k) {
+        const method m = methods[k];
+        for (int spp : *lists[k]) {
+            const method_image r = render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed);
+            nonfinite += r.nonfinite;
+            const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
+            const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
+            rows.push_back({m, spp, r.seconds, r.cpu_seconds, r.rays_per_pixel, e});
+            if (spp == 4) ok = ltc_examples::write_png(out_dir / ("error_" + stem + ".png"), W, H, rgb) && ok;
+            if (spp != 1 && spp != 4 && spp != 16) continue;
+            ok = write_image(out_dir / (stem + ".png"), r.img, W, H, opt.exposure) && ok;
+            if (m == method::ratio_ltc || m == method::ratio_ltc_adaptive) pairs.push_back({m, spp, r.img, {}});
+        }
+    }
+    ok = write_csv(out_dir / "error_vs_time.csv", rows) && ok;
+    for (region g : regions) print_table(rows, g);
+    print_equal_time(rows, false, region::floor);
+    for (region g : regions) print_equal_time(rows, true, g);
+
+    // (a)'s and (a+)'s errors split into their noise and bias: a second render of each with other seeds.
+    for (seed_pair& p : pairs) {
+        const method_image second =
+            render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp, mix_seed(opt.seed, 0x5EEDu), 1);
+        p.second = second.img;
+        nonfinite += second.nonfinite;
+    }
+    print_noise_bias(pairs, hits, ref.img, dark_floor, ref_noise.rms);
+    std::printf("\nnon-finite pixel values (made black; expected 0): %zu\n", nonfinite);
+    return ok && nonfinite == 0 ? 0 : 1;
+}

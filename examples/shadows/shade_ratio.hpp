@@ -1,0 +1,113 @@
+// shadows/shade_ratio.hpp -- methods (a), (a+) and (b): ltc::shade_polygon_light_shadowed
+// (ltc/shading/shadowed_polygon_light.hpp), the ratio estimator of Heitz, Hill and McGuire 2018:
+// the analytic, unshadowed LTC shading times the ratio of two Monte Carlo estimates over the same
+// K samples, of the shadowed and of the unshadowed integrand, per term (specular, diffuse).
+//   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
+//        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
+//        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~15x more per sample) in
+//        proportion to the specular and diffuse shares of the analytic result, combined by the
+//        balance heuristic over the whole plan (every sample serves both terms): up to K rays.
+//   (a+) (a) with an early stop: first K0 = min(K, adaptive_first) samples; where both terms'
+//        ratios are exactly 0 or 1 (all samples agreed: umbra or fully lit), that result; else K
+//        more with another rotation, and the two ratios averaged with weights K0 and K: up to
+//        K0 + K rays (main.cpp's file comment: why the average, and the early stop's bias).
+//   (b)  K points uniform over the light's area, shared by both terms: up to K rays.
+// All on a rank-1 lattice shifted by a per-pixel random rotation (Cranley-Patterson), so that the
+// lattice's structured error becomes noise. Visibility: Embree shadow rays
+// (tracer::light_visible, the offsets of tracer.hpp).
+#pragma once
+
+#include "camera.hpp"
+#include "scene.hpp"
+#include "shade_mis.hpp"  // shaded_pixel, uniform_float
+#include "tracer.hpp"
+
+#include <ltc/reference/splitmix64.hpp>
+#include <ltc/shading/shadowed_polygon_light.hpp>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+namespace shadows {
+
+enum class method { ratio_ltc, ratio_area, mis, ratio_ltc_adaptive };  // the values seed the renders
+
+inline const char* method_name(method m) {
+    switch (m) {
+        case method::ratio_ltc: return "ratio_ltc";
+        case method::ratio_ltc_adaptive: return "ratio_ltc_adaptive";
+        case method::ratio_area: return "ratio_area";
+        default: return "mis";
+    }
+}
+
+/// The tables' short names: (a), (a+), (b), (c).
+inline const char* method_label(method m) {
+    switch (m) {
+        case method::ratio_ltc: return "(a)";
+        case method::ratio_ltc_adaptive: return "(a+)";
+        case method::ratio_area: return "(b)";
+        default: return "(c)";
+    }
+}
+
+constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
+
+/// One call of the library at the pixel: K samples by `sampler`, a random lattice rotation.
+inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, const tracer& tr, const pixel_hit& h,
+                                                               ltc::shadow_sampler sampler, int K,
+                                                               ltc::ground_truth::splitmix64& rng) {
+    const material& m = s.materials[static_cast<std::size_t>(h.material)];
+    ltc::shadow_options<float> options;
+    options.samples = static_cast<std::size_t>(K);
+    const float rx = uniform_float(rng), ry = uniform_float(rng);
+    options.rotation = glm::vec2(rx, ry);
+    options.sampler = sampler;
+    const vec3 N = h.n;
+    const auto visible = [&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
+        return tr.light_visible(origin, N, unit_direction, distance);
+    };
+    return ltc::shade_polygon_light_shadowed(h.p, h.n, h.v, m.roughness, m.f0, m.albedo, s.light_radiance,
+                                             s.light_vertices, 4, ltc::sidedness::one_sided, visible, options);
+}
+
+/// Whether a term's ratio is exactly 0 or 1: its result is 0 or the unshadowed one. (A ratio
+/// within a float's rounding of 1, where an occluded sample's weight is below 2^-24 of the
+/// others', passes too: its difference from 1 is below the result's own rounding.)
+inline bool agreed(const glm::vec3& ratio, const glm::vec3& unshadowed) {
+    return ratio == glm::vec3(0.0f) || ratio == unshadowed;
+}
+
+/// Radiance towards the camera at one pixel by (a), (a+) or (b) with K = spp samples.
+inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
+                                std::uint64_t seed) {
+    shaded_pixel out;
+    if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
+    if (!h.shaded() || spp <= 0) return out;
+    ltc::ground_truth::splitmix64 rng(seed);
+    const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
+    const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
+    const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, rng);
+    out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
+    out.rays = r.rays;
+    if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
+                                                agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
+        return out;
+    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed(s, tr, h, sampler, spp, rng);
+    const double w = static_cast<double>(first) / static_cast<double>(first + spp);
+    out.radiance = w * out.radiance + (1.0 - w) * dvec3(more.ratio.specular + more.ratio.diffuse);
+    out.rays += more.rays;
+    return out;
+}
+
+/// One pixel by any method: K = spp samples for (a), (a+) and (b), spp MIS iterations (one BRDF
+/// and one light sample each) for (c).
+inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
+                          std::uint64_t seed) {
+    return which == method::mis ? shade_mis(s, tr, h, spp, seed) : shade_ratio(s, tr, h, which, spp, seed);
+}
+
+}  // namespace shadows
