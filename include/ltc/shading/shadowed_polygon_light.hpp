@@ -19,8 +19,9 @@
 //                density D / I_D (ltc/core/ltc_polygon_sampling.hpp), the diffuse share from
 //                options.diffuse: light_area (the default: uniform on the light, cheap) or cosine
 //                (the clamped cosine restricted to the polygon, exact, density cos / E:
-//                ltc/core/projected_solid_angle_sampling.hpp; ~15x the cost per sample, worth it
-//                only for lights close to or grazing the surface). The K samples are split in
+//                ltc/core/projected_solid_angle_sampling.hpp; ~8x the cost per sample, for
+//                constant diffuse weights where area samples' vary most: lights close to or
+//                grazing the surface). The K samples are split in
 //                proportion to the specular and diffuse shares of the analytic result and
 //                weighted by the balance heuristic over the whole plan (multi-sample MIS, Veach
 //                1997 eq. 9.13: f / (K_s D / I_D + K_d p_d), the normalizers in closed form).
