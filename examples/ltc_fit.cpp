@@ -5,8 +5,8 @@
 //
 // The fit is ltc::fit::fit_table (include/ltc/fitting/fit_table.hpp; ltc/fitting/fit.hpp gives an
 // overview of the method) and the text is ltc::fit::table_header_text (ltc/fitting/table_writer.hpp);
-// the output depends only on the options that change the fit (--brdf, --size), never on --threads:
-// the same binary writes the same bytes with any thread count.
+// the output depends only on the options that change the fit (--brdf, --size, --objective), never
+// on --threads: the same binary writes the same bytes with any thread count.
 #include <ltc/fitting/brdf/beckmann.hpp>
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
@@ -34,7 +34,7 @@
 namespace {
 
 const char* const usage_text =
-    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--threads K] [--quiet]\n"
+    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--objective O] [--threads K] [--quiet]\n"
     "\n"
     "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
     "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
@@ -45,6 +45,8 @@ const char* const usage_text =
     "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2\n"
     "  --out FILE     the header to write ('-' for standard output)\n"
     "  --size N       nodes per axis (default 64, at least 2)\n"
+    "  --objective O  l3 (default: the paper's, the shipped tables), integrals, combined,\n"
+    "                 integrals+mag or combined+mag (opt-in, ltc/fitting/integral_objective.hpp)\n"
     "  --threads K    worker threads (default: all cores); the output does not depend on it\n"
     "  --quiet        no progress bar (it is only drawn when standard error is a terminal)\n"
     "  --help         this text\n"
@@ -59,6 +61,8 @@ struct arguments {
     std::string brdf;
     std::string out;
     int size = 64;
+    ltc::fit::objective goal = ltc::fit::objective::l3;
+    bool fit_magnitude = false;
     unsigned threads = 0;
     bool quiet = false;
 };
@@ -104,6 +108,14 @@ arguments parse(int argc, char** argv) {
             a.out = next();
         } else if (arg == "--size") {
             a.size = int(parse_integer(arg, next(), 2, 4096));
+        } else if (arg == "--objective") {
+            const std::string o = next();
+            a.fit_magnitude = o.size() > 4 && o.compare(o.size() - 4, 4, "+mag") == 0;
+            const std::string base = a.fit_magnitude ? o.substr(0, o.size() - 4) : o;
+            if (base == "l3" && !a.fit_magnitude) a.goal = ltc::fit::objective::l3;
+            else if (base == "integrals") a.goal = ltc::fit::objective::integrals;
+            else if (base == "combined") a.goal = ltc::fit::objective::combined;
+            else fail("unknown objective '" + o + "' (l3, integrals, combined, integrals+mag, combined+mag)");
         } else if (arg == "--threads" || arg == "-j") {
             a.threads = unsigned(parse_integer(arg, next(), 1, 4096));
         } else if (arg == "--quiet" || arg == "-q") {
@@ -155,6 +167,8 @@ int run(const arguments& args, const char* description) {
     ltc::fit::options opt;
     opt.size = args.size;
     opt.threads = args.threads;
+    opt.goal = args.goal;
+    opt.fit_magnitude = args.fit_magnitude;
     const bool draw = !args.quiet && LTC_FIT_ISATTY(2);
     progress_bar bar(draw);
     const ltc::fit::table tab = ltc::fit::fit_table<Brdf>(opt, [&](std::size_t done, std::size_t total) { bar(done, total); });

@@ -1,8 +1,10 @@
 // ggx_error_report -- how far LTC shading of polygonal lights is from the real GGX integral.
 //
-//   ggx_error_report [--fit-sizes 8,16,32] [--target 0.002] [--threads K] [--list]
+//   ggx_error_report [--fit-sizes 8,16,32] [--objectives integrals,combined] [--objective-size 64]
+//                    [--target 0.002] [--threads K] [--list]
 //
-// (--fit-sizes 0 skips section 7; --list prints every configuration; about 40 s on 2 cores.)
+// (--fit-sizes 0 skips section 7, --objectives none section 8; --list prints every configuration;
+// about 40 s on 2 cores, plus about 10-20 s per objective of section 8.)
 //
 // For every configuration of a documented grid it computes the Monte Carlo ground truth of
 // int_P rho_GGX(V, L) cos(theta_L) dL (ltc/reference/ground_truth.hpp: BRDF sampling + uniform spherical
@@ -23,7 +25,8 @@
 // configurations and broken down by roughness, view angle, placement and size; then the
 // clipless methods against exact LTC clipping (the cost of the sphere approximation alone);
 // then the error of tables fitted here at smaller sizes (ltc::fit::fit_table), with their
-// fitting time and size, against the same ground truth.
+// fitting time and size, against the same ground truth; then tables fitted with each per-node
+// objective of ltc::fit::options::goal (--objectives, --objective-size), against the same.
 //
 // The grid (local frame N = +z, shading point at the origin, V = (sin theta_v, 0, cos theta_v)):
 //   theta_v    0, 30, 60, 80 degrees
@@ -44,8 +47,8 @@
 // Source files (examples/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
 // LTC estimate with each method), statistics.hpp (relative errors and their summaries),
 // common/parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
-// horizon.cpp, clipless.cpp, fit_sizes.cpp), and this file: the command line, the ground truth,
-// the first section and the list of every configuration.
+// horizon.cpp, clipless.cpp, fit_sizes.cpp, objectives.cpp), and this file: the command line, the
+// ground truth, the first section and the list of every configuration.
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "common/parallel_for.hpp"
@@ -72,6 +75,17 @@ using namespace ggx_error_report;  // the pieces above
 
 namespace {
 
+std::vector<std::string> parse_names(const std::string& s) {
+    std::vector<std::string> r;
+    std::size_t b = 0;
+    while (b < s.size()) {
+        const std::size_t e = std::min(s.find(',', b), s.size());
+        if (e > b && s.compare(b, e - b, "none") != 0) r.push_back(s.substr(b, e - b));
+        b = e + 1;
+    }
+    return r;
+}
+
 std::vector<int> parse_sizes(const char* s) {
     std::vector<int> r;
     while (*s) {
@@ -88,6 +102,8 @@ std::vector<int> parse_sizes(const char* s) {
 
 int main(int argc, char** argv) {
     std::vector<int> fit_sizes = {8, 16, 32};
+    std::vector<std::string> objectives = {"integrals", "combined"};
+    int objective_size = 64;
     double target = 0.002;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     bool list = false;
@@ -95,6 +111,10 @@ int main(int argc, char** argv) {
         const std::string a = argv[i];
         if (a == "--fit-sizes" && i + 1 < argc)
             fit_sizes = parse_sizes(argv[++i]);
+        else if (a == "--objectives" && i + 1 < argc)
+            objectives = parse_names(argv[++i]);
+        else if (a == "--objective-size" && i + 1 < argc)
+            objective_size = std::max(2, std::atoi(argv[++i]));
         else if (a == "--target" && i + 1 < argc)
             target = std::atof(argv[++i]);
         else if (a == "--threads" && i + 1 < argc)
@@ -103,7 +123,8 @@ int main(int argc, char** argv) {
             list = true;
         else {
             std::fprintf(stderr,
-                         "usage: ggx_error_report [--fit-sizes 8,16,32] [--target 0.002] [--threads K] [--list]\n");
+                         "usage: ggx_error_report [--fit-sizes 8,16,32] [--objectives integrals,combined]\n"
+                         "                        [--objective-size 64] [--target 0.002] [--threads K] [--list]\n");
             return 2;
         }
     }
@@ -189,9 +210,10 @@ int main(int argc, char** argv) {
     print_by_placement_and_size(grid, ev);
     print_clipless_vs_exact(grid, ev);
     print_fit_sizes(grid, ev, fit_sizes, threads);
+    if (!objectives.empty()) print_fit_objectives(grid, ev, objective_size, objectives, threads);
 
     if (list) {
-        std::printf("\n8. Every configuration: GT +- std error, then each method's relative error\n");
+        std::printf("\n9. Every configuration: GT +- std error, then each method's relative error\n");
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const auto& c = grid[i];
             std::printf("  th %2.0f r %.2f %-9s s/d %.1f %-6s%s GT %.5e +- %.1e (%8llu)", thetas[c.theta], roughnesses[c.rough],

@@ -6,6 +6,7 @@
 #include "ltc_estimate.hpp"
 
 #include <chrono>
+#include <string>
 #include <vector>
 
 namespace ggx_error_report {
@@ -30,5 +31,10 @@ void print_clipless_vs_exact(const std::vector<config>& grid, const evaluation& 
 /// 7.: tables fitted here at the given sizes against the same ground truth (fit_sizes.cpp).
 void print_fit_sizes(const std::vector<config>& grid, const evaluation& ev, const std::vector<int>& fit_sizes,
                      unsigned threads);
+
+/// 8.: tables of the given size fitted with each named objective (l3, integrals, combined, each
+/// optionally "+mag") against the same ground truth (objectives.cpp).
+void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev, int size,
+                          const std::vector<std::string>& objectives, unsigned threads);
 
 }  // namespace ggx_error_report

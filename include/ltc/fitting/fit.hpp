@@ -29,6 +29,8 @@
 //   ltc/fitting/error_metric.hpp    the L3 error, by MIS over frozen samples; measure_error
 //   ltc/fitting/nelder_mead.hpp     the minimizer
 //   ltc/fitting/fit_node.hpp        fitting one node (fit_node)
+//   ltc/fitting/integral_objective.hpp, fit_integrals.hpp  the opt-in objective of options::goal:
+//                                   relative error of integrals over a fixed family of polygons
 //   ltc/fitting/fit_table.hpp       fitting a whole table on std::threads (fit_table)
 //   ltc/fitting/table_writer.hpp    a fitted table as a C++ header (table_header_text)
 //
@@ -45,6 +47,8 @@
 #include <ltc/fitting/moments.hpp>
 #include <ltc/fitting/error_metric.hpp>
 #include <ltc/fitting/nelder_mead.hpp>
+#include <ltc/fitting/integral_objective.hpp>
+#include <ltc/fitting/fit_integrals.hpp>
 #include <ltc/fitting/fit_node.hpp>
 #include <ltc/fitting/fit_table.hpp>
 #include <ltc/fitting/table_writer.hpp>

@@ -10,6 +10,11 @@
 namespace ltc {
 namespace fit {
 
+/// What each node minimizes: the paper's L3 distance between the lobes (l3, the default: the
+/// shipped tables), the relative error of integrals over a fixed family of polygons (integrals),
+/// or their sum (combined); see ltc/fitting/integral_objective.hpp and fit_integrals.hpp.
+enum class objective { l3, integrals, combined };
+
 struct options {
     int size = 64;                 ///< N: the table has N x N nodes
     double alpha_min = 1e-4;       ///< alpha = max(roughness^2, alpha_min) (paper code: 1e-4)
@@ -23,6 +28,8 @@ struct options {
     double initial_step = 0.1;     ///< simplex size of the first round (log / ratio units)
     unsigned threads = 0;          ///< worker threads for fit_table (0: all cores)
     double progress_interval = 0.1;  ///< seconds between progress callbacks
+    objective goal = objective::l3;  ///< the per-node objective (l3: the shipped tables)
+    bool fit_magnitude = false;      ///< integrals / combined: also fit a scale of the magnitude
 };
 
 /// x = sqrt(1 - cos theta_v) of node t of n.

@@ -89,6 +89,11 @@ inline std::string table_header_text(const std::string& brdf, const std::string&
       << opt.error_samples << " BRDF and LTC samples,\n"
       << "// " << opt.rounds << " rounds, Nelder-Mead tolerance " << opt.tolerance << "); moments over "
       << opt.moment_samples << " x " << opt.moment_samples << " samples.\n";
+    if (opt.goal != objective::l3)  // ltc/fitting/integral_objective.hpp (opt-in; never the shipped tables)
+        o << "// Objective: NOT the L3 error above but "
+          << (opt.goal == objective::integrals ? "the integral objective" : "the integral objective + squared L3")
+          << " of ltc/fitting/integral_objective.hpp" << (opt.fit_magnitude ? ", magnitude scale fitted" : "")
+          << ".\n";
     std::snprintf(line, sizeof line,
                   "// Fit error (relative to rho cos, as estimated by the fit): L1 mean %.4f, max %.4f; L3 mean %.4f, "
                   "max %.4f.\n",

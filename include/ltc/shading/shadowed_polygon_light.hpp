@@ -14,7 +14,8 @@
 //                                              ltc::shadow_options<float>{16, per_pixel_shift});
 //   glm::vec3 colour = r.ratio.specular + r.ratio.diffuse;
 //
-// Samples (shadow_sampler), K in all, one visibility query each, every sample serving both terms:
+// Samples (shadow_sampler), K in all, one visibility query each (none for a sample below the
+// surface, where both integrands vanish), every sample serving both terms:
 //   ltc_polygon  the specular share from the exact sampler of the LTC restricted to the polygon,
 //                density D / I_D (ltc/core/ltc_polygon_sampling.hpp), the diffuse share from
 //                options.diffuse: light_area (the default: uniform on the light, cheap) or cosine
@@ -146,14 +147,15 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     // balance heuristic's denominator, Veach 1997 eq. 9.13), adds f / density to both terms.
     detail::ratio_sums<T> spec, diff;
     const auto add = [&](const vec3& l, const vec3& world, T distance, T density) {
-        if (!(density > T(0))) return;
+        // Below the surface both integrands are 0: no query (the sums would not change).
+        if (!(density > T(0)) || !(l.z > T(0))) return;
         ++r.rays;
         const bool seen = distance > T(0) && static_cast<bool>(visible(P, world, distance));
         const vec3 h = detail::safe_normalize(v_local + l);  // Schlick's factor at V.H
         const T m = T(1) - glm::clamp(glm::dot(v_local, h), T(0), T(1));
         const vec3 fresnel = F0 + (vec3(T(1)) - F0) * (m * m * m * m * m);
         spec.add(brdf::ggx<T>::eval(v_local, l, alpha) / density, fresnel, seen);
-        diff.add(glm::max(l.z, T(0)) / pi<T>() / density, vec3(T(1)), seen);
+        diff.add(l.z / pi<T>() / density, vec3(T(1)), seen);
     };
     const auto to_world = [&](const vec3& w) { return frame.t1 * w.x + frame.t2 * w.y + frame.n * w.z; };
     const auto plane_distance = [&](const vec3& w) {  // along the unit world direction w
