@@ -16,24 +16,23 @@
 //
 // Samples (shadow_sampler), K in all (on average, with rejection), one visibility query each (none
 // for a sample below the surface, where both integrands vanish), every sample serving both terms:
-//   ltc_polygon  the specular share from the LTC restricted to the polygon, density D / I_D: where
-//                the light holds at least 1/8 of the lobe (I_D >= options.rejection_from), by
-//                rejection, K_s / I_D
-//                draws of the whole LTC (Algorithm 1, ~10x cheaper than an exact sample) of which
-//                those that hit the light are kept (K_s on average; no query for the others),
-//                else by the exact sampler (ltc/core/ltc_polygon_sampling.hpp); the diffuse share from
-//                options.diffuse: light_area (the default: uniform on the light, cheap) or cosine
-//                (the clamped cosine restricted to the polygon, exact, density cos / E:
-//                ltc/core/projected_solid_angle_sampling.hpp; ~8x the cost per sample, for
-//                constant diffuse weights where area samples' vary most: lights close to or
-//                grazing the surface). The K samples are split in
-//                proportion to the specular and diffuse shares of the analytic result and
+//   ltc_polygon  the specular share from the LTC restricted to the polygon, density D / I_D:
+//                where the light holds at least options.rejection_from (1/8) of the lobe, by
+//                rejection: N = K_s / I_D draws of the whole LTC (Algorithm 1: no sampler to
+//                build), those that hit the light kept (K_s on average, no query for the
+//                others); elsewhere by the exact sampler (ltc/core/ltc_polygon_sampling.hpp).
+//                The diffuse share from options.diffuse: light_area (the default: uniform on the
+//                light) or cosine (the clamped cosine restricted to the polygon, exact, density
+//                cos / E: ltc/core/projected_solid_angle_sampling.hpp; ~8x the cost of an area
+//                sample in bench_sampling, for constant diffuse weights where area samples' vary
+//                most: lights close to or grazing the surface). K_s and K_d are in proportion to
+//                the specular and diffuse shares of the analytic result, and every sample is
 //                weighted by the balance heuristic over the whole plan (multi-sample MIS, Veach
-//                1997 eq. 9.13: f / (K_s D / I_D + K_d p_d), or N D + K_d p_d for N rejection
-//                draws; the normalizers in closed form).
-//                Where the light is unoccluded the ratio is exactly 1 (the analytic result,
-//                without noise); where the LTC takes all K samples, f / p varies only by the
-//                GGX/LTC mismatch, so the ratio is close to the visible fraction of the samples.
+//                1997 eq. 9.13: f / (K_s D / I_D + K_d p_d), or f / (N D + K_d p_d) with
+//                rejection; the normalizers in closed form). Where the light is unoccluded the
+//                ratio is exactly 1 (the analytic result, without noise); where the LTC takes
+//                all the samples, f / p varies only by the GGX/LTC mismatch, so the ratio is
+//                close to the visible fraction of the samples.
 //   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
 //                density |x - P|^2 / (A |cos theta_x|), for both terms: the common renderer
 //                baseline.
