@@ -72,6 +72,11 @@ inline std::string table_header_text(const std::string& brdf, const std::string&
       << "//\n"
       << "// Regenerate (from the repository root; the output does not depend on --threads):\n"
       << "//   cmake --build build --target ltc_fit && ./build/examples/ltc_fit --brdf " << brdf
+      << (n != options{}.size ? " --size " + std::to_string(n) : std::string())
+      << (opt.goal == objective::l3 ? std::string()
+                                    : std::string(" --objective ") +
+                                          (opt.goal == objective::integrals ? "integrals" : "combined") +
+                                          (opt.fit_magnitude ? "+mag" : ""))
       << " --out include/ltc/tables/" << brdf << ".hpp\n"
       << "//\n"
       << "// BRDF: " << description << ",\n"
