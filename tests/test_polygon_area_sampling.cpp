@@ -229,3 +229,23 @@ TEMPLATE_TEST_CASE("area sampler: any scale", "[area-sampling][degenerate]", flo
         CHECK(std::abs(p - expected) <= 64 * std::numeric_limits<T>::epsilon() * expected);
     }
 }
+
+// Regression (found by the fuzzer): vertices with a coordinate at the largest finite float. The
+// weighted sum b0 a + b1 b + b2 c of a sample rounded past it to +Inf; the sample is now clamped
+// to the triangle's bounding box, which holds the exact point.
+TEMPLATE_TEST_CASE("area sampler: vertices at the largest finite value", "[area-sampling][degenerate]", float, double) {
+    using T = TestType;
+    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;
+    const T big = std::numeric_limits<T>::max();
+    const std::vector<vec3> quad = {vec3(0, 0, big), vec3(1, 0, big), vec3(1, 1, big), vec3(0, 1, big)};
+    const ltc::polygon_area_sampler<T> s(quad.data(), 4);
+    REQUIRE_FALSE(s.empty());
+    for (int i = 0; i <= 16; ++i)
+        for (int j = 0; j <= 16; ++j) {
+            const vec3 x = s.sample(vec2(T(i) / 16, T(j) / 16));
+            CAPTURE(i, j);
+            CHECK((std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z)));
+            CHECK(x.z == big);
+        }
+}

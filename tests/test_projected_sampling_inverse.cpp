@@ -249,3 +249,27 @@ TEMPLATE_TEST_CASE("projected sampler: sub-epsilon triangles give an empty sampl
         CHECK(std::isfinite(s.pdf(x.direction)));
     }
 }
+
+// Regression (found by the fuzzer): a planar quad with a vertex exactly on the horizon clips to
+// three vertices on the horizon's great circle, so one fan triangle is flat (mass 0). With u.x = 1
+// the triangle search ended on it when it came last, and the sample was its apex, on the horizon,
+// with pdf 0; flat triangles are now never chosen.
+TEMPLATE_TEST_CASE("projected sampler: a flat last fan triangle is never sampled", "[projected-sampling][degenerate]",
+                   float, double) {
+    using T = TestType;
+    using vec3 = glm::vec<3, T>;
+    const vec3 q[4] = {vec3(-1, 1, -1), vec3(1, 1, -1), vec3(1, 1, 0), vec3(-1, 1, 1)};
+    for (int reversed = 0; reversed < 2; ++reversed)
+        for (int rotation = 0; rotation < 4; ++rotation) {
+            vec3 v[4];
+            for (int i = 0; i < 4; ++i) v[i] = q[(rotation + (reversed ? 4 - i : i)) % 4];
+            const ltc::projected_polygon_sampler<T> s(v, 4);
+            REQUIRE_FALSE(s.empty());
+            for (const T y : {T(0), T(0.25), T(0.5), T(1)}) {
+                const ltc::polygon_sample<T> x = s.sample(glm::vec<2, T>(T(1), y));
+                CAPTURE(reversed, rotation, y);
+                CHECK(x.pdf > 0);
+                CHECK(s.pdf(x.direction) > 0);
+            }
+        }
+}

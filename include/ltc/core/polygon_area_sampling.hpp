@@ -84,7 +84,10 @@ class polygon_area_sampler {
         // SampleUniformTriangle in its older form).
         const T s = std::sqrt(u1);
         const T b0 = T(1) - s, b1 = s * (T(1) - glm::clamp(u.y, T(0), T(1)));
-        return b0 * p_[0] + b1 * p_[k + 1] + (T(1) - b0 - b1) * p_[k + 2];
+        const vec3 &a = p_[0], &b = p_[k + 1], &c = p_[k + 2];
+        // The triangle's bounding box holds the point: clamping to it keeps the rounding of the
+        // weighted sum from stepping past the largest finite T for vertices near it.
+        return glm::clamp(b0 * a + b1 * b + (T(1) - b0 - b1) * c, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
     }
 
     /// Density in solid angle, at `origin`, of the direction towards the sampled point x:

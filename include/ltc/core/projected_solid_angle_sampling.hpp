@@ -99,6 +99,7 @@ struct projected_fan {
         k = 0;
         const C target = ux * total;
         while (k + 1 < count && (cdf[k] <= target || !(tris[k].mass > C(0)))) ++k;
+        while (k > 0 && !(tris[k].mass > C(0))) --k;  // u.x = 1 with a flat last triangle
         const projected_triangle<C>& t = tris[k];
         const C below = k > 0 ? cdf[k - 1] : C(0);
         const C u1 = t.mass > C(0) ? glm::clamp((target - below) / t.mass, C(0), C(1)) : C(0);
@@ -200,7 +201,8 @@ class projected_polygon_sampler {
         // density 0: move it into the triangle by the smallest power-of-16 multiple of epsilon
         // that makes it positive (a bias confined to a set of measure ~epsilon).
         if (!(w.z > T(0))) {
-            const vec3 centre = detail::safe_normalize(v_[0] + v_[k + 1] + v_[k + 2]);
+            vec3 centre = detail::safe_normalize(v_[0] + v_[k + 1] + v_[k + 2]);
+            if (!(centre.z > T(0))) centre = interior();  // a triangle flat on the horizon
             T lift = detail::epsilon<T>();
             for (int i = 0; i < 16 && !(w.z > T(0)); ++i, lift *= T(16))
                 w = detail::safe_normalize(w + lift * centre);
