@@ -100,7 +100,10 @@ class ltc_polygon_sampler {
 
   private:
     LTC_HOST_DEVICE T density(const vec3& w) const {
-        return cosine_.pdf(detail::safe_normalize(m_inv_ * w)) * jacobian(w);
+        // A Jacobian past T's range (M near singular, w near its null direction): saturated, and
+        // never multiplied into a zero density (0 x Inf).
+        const T p = cosine_.pdf(detail::safe_normalize(m_inv_ * w));
+        return p > T(0) ? glm::min(p * jacobian(w), detail::largest_finite<T>()) : T(0);
     }
 
     // |M^-1| / |M^-1 w|^3 (transformed<>::jacobian).

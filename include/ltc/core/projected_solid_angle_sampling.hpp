@@ -200,11 +200,11 @@ class projected_polygon_sampler {
         // A sample on the horizon (u on the border of the square with a vertex at z = 0) has
         // density 0: move it into the triangle by the smallest power-of-16 multiple of epsilon
         // that makes it positive (a bias confined to a set of measure ~epsilon).
-        if (!(w.z > T(0))) {
+        if (!(w.z / total_ > T(0))) {  // also a w.z so small that w.z / E underflows
             vec3 centre = detail::safe_normalize(v_[0] + v_[k + 1] + v_[k + 2]);
             if (!(centre.z > T(0))) centre = interior();  // a triangle flat on the horizon
             T lift = detail::epsilon<T>();
-            for (int i = 0; i < 16 && !(w.z > T(0)); ++i, lift *= T(16))
+            for (int i = 0; i < 16 && !(w.z / total_ > T(0)); ++i, lift *= T(16))
                 w = detail::safe_normalize(w + lift * centre);
         }
         r.direction = w;
