@@ -34,7 +34,7 @@
 namespace {
 
 const char* const usage_text =
-    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--objective O] [--threads K] [--quiet]\n"
+    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--objective O] [--lobes 1|2] [--threads K] [--quiet]\n"
     "\n"
     "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
     "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
@@ -44,9 +44,12 @@ const char* const usage_text =
     "\n"
     "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2\n"
     "  --out FILE     the header to write ('-' for standard output)\n"
-    "  --size N       nodes per axis (default 64, at least 2)\n"
+    "  --size N       nodes per axis (default 64 with one lobe, 32 with two; at least 2)\n"
     "  --objective O  l3 (default: the paper's, the shipped tables), integrals, combined,\n"
     "                 integrals+mag or combined+mag (opt-in, ltc/fitting/integral_objective.hpp)\n"
+    "  --lobes 2      a sum of two LTCs per node (ltc/fitting/fit_two_lobes.hpp; writes\n"
+    "                 ltc::tables::<brdf>_two_lobe_size and _data, two such tables; --objective\n"
+    "                 does not apply)\n"
     "  --threads K    worker threads (default: all cores); the output does not depend on it\n"
     "  --quiet        no progress bar (it is only drawn when standard error is a terminal)\n"
     "  --help         this text\n"
@@ -55,12 +58,14 @@ const char* const usage_text =
     "between rho*cos and magnitude * LTC, as estimated by the fit) to standard output.\n"
     "\n"
     "Regenerate the shipped table:\n"
-    "  ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp\n";
+    "  ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp\n"
+    "  ltc_fit --brdf ggx --lobes 2 --out include/ltc/tables/ggx_two_lobe.hpp\n";
 
 struct arguments {
     std::string brdf;
     std::string out;
-    int size = 64;
+    int size = 0;  // 0: the default of the lobe count
+    int lobes = 1;
     ltc::fit::objective goal = ltc::fit::objective::l3;
     bool fit_magnitude = false;
     unsigned threads = 0;
@@ -116,6 +121,8 @@ arguments parse(int argc, char** argv) {
             else if (base == "integrals") a.goal = ltc::fit::objective::integrals;
             else if (base == "combined") a.goal = ltc::fit::objective::combined;
             else fail("unknown objective '" + o + "' (l3, integrals, combined, integrals+mag, combined+mag)");
+        } else if (arg == "--lobes") {
+            a.lobes = int(parse_integer(arg, next(), 1, 2));
         } else if (arg == "--threads" || arg == "-j") {
             a.threads = unsigned(parse_integer(arg, next(), 1, 4096));
         } else if (arg == "--quiet" || arg == "-q") {
@@ -127,6 +134,8 @@ arguments parse(int argc, char** argv) {
     if (a.brdf.empty()) fail("--brdf is required");
     if (a.brdf != "ggx" && a.brdf != "beckmann") fail("unknown BRDF '" + a.brdf + "' (ggx or beckmann)");
     if (a.out.empty()) fail("--out is required");
+    if (a.lobes == 2 && a.goal != ltc::fit::objective::l3) fail("--objective does not apply to --lobes 2");
+    if (a.size == 0) a.size = a.lobes == 2 ? ltc::fit::two_lobe_default_size : ltc::fit::options{}.size;
     return a;
 }
 
@@ -162,6 +171,19 @@ class progress_bar {
     std::chrono::steady_clock::time_point start_;
 };
 
+/// Writes the header text to `out` ('-': standard output); false (with a message) if it cannot.
+bool write_text(const std::string& out, const std::string& text) {
+    if (out == "-") {
+        std::cout << text;
+        return true;
+    }
+    std::ofstream file(out, std::ios::binary);
+    file << text;
+    file.close();
+    if (!file) std::cerr << "ltc_fit: cannot write '" << out << "'\n";
+    return bool(file);
+}
+
 template <template <typename> class Brdf>
 int run(const arguments& args, const char* description) {
     ltc::fit::options opt;
@@ -171,21 +193,20 @@ int run(const arguments& args, const char* description) {
     opt.fit_magnitude = args.fit_magnitude;
     const bool draw = !args.quiet && LTC_FIT_ISATTY(2);
     progress_bar bar(draw);
+    if (args.lobes == 2) {
+        const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(opt);
+        const double seconds = bar.seconds();
+        if (!write_text(args.out, ltc::fit::two_lobe_table_header_text(args.brdf, description, tab, opt))) return 1;
+        const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+        std::fprintf(args.out == "-" ? stderr : stdout, "ltc_fit: %s, two lobes, %d x %d nodes in %.2f s on %u thread%s%s%s\n",
+                     args.brdf.c_str(), tab.size, tab.size, seconds, threads, threads == 1 ? "" : "s",
+                     args.out == "-" ? "" : "; wrote ", args.out == "-" ? "" : args.out.c_str());
+        return 0;
+    }
     const ltc::fit::table tab = ltc::fit::fit_table<Brdf>(opt, [&](std::size_t done, std::size_t total) { bar(done, total); });
     const double seconds = bar.seconds();
     const ltc::fit::error_summary err = ltc::fit::summarize_error(tab);
-    const std::string text = ltc::fit::table_header_text(args.brdf, description, tab, opt);
-    if (args.out == "-") {
-        std::cout << text;
-    } else {
-        std::ofstream file(args.out, std::ios::binary);
-        file << text;
-        file.close();
-        if (!file) {
-            std::cerr << "ltc_fit: cannot write '" << args.out << "'\n";
-            return 1;
-        }
-    }
+    if (!write_text(args.out, ltc::fit::table_header_text(args.brdf, description, tab, opt))) return 1;
     const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
     std::FILE* summary = args.out == "-" ? stderr : stdout;
     std::fprintf(summary,

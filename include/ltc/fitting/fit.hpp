@@ -51,6 +51,7 @@
 #include <ltc/fitting/fit_integrals.hpp>
 #include <ltc/fitting/fit_node.hpp>
 #include <ltc/fitting/fit_table.hpp>
+#include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/fitting/table_writer.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>

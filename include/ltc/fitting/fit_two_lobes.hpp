@@ -1,0 +1,319 @@
+// ltc/fitting/fit_two_lobes.hpp -- fitting a node with a *sum of two* LTCs (issue 16: where one
+// linearly transformed cosine cannot follow GGX, at grazing views and low roughness):
+//
+//   f = rho cos ~= magnitude * ((1 - s) D_1 + s D_2),   D_i the LTC of M_i, s in (0, 1),
+//
+// each D_i integrated over a polygon exactly (eq. 3), so the shading integral stays closed form at
+// twice the cost of one lobe. M_1 and M_2 have the structure of ltc/fitting/ltc_parameters.hpp
+// (4 parameters each about the BRDF's average direction); s is the second lobe's share of the
+// magnitude, parameterized by its logit.
+//
+// Objective (fit_two_lobes): the integral loss of ltc/fitting/integral_objective.hpp applied to
+// the mixture, plus the squared relative L3 distance of the mixture to f (the combined objective
+// of fit_integrals.hpp, written for two lobes): the L3 term keeps the peak, the integrals the
+// tails. The L3 distance is estimated by MIS (balance heuristic) over three n x n midpoint sets:
+// the BRDF's sampler and each lobe's (Algorithm 1), frozen for a round and re-centred on the
+// round's result, as in ltc/fitting/error_metric.hpp. Minimizer: Nelder-Mead on the 9 numbers
+// (3 at normal incidence, where both lobes are isotropic), from lobe 1 = the one-lobe fit and
+// lobe 2 = lobe 1 twice as wide with share 0.2.
+#pragma once
+
+#include <ltc/fitting/brdf/model.hpp>
+#include <ltc/fitting/error_metric.hpp>
+#include <ltc/fitting/fit_node.hpp>
+#include <ltc/fitting/fit_table.hpp>
+#include <ltc/fitting/integral_objective.hpp>
+#include <ltc/fitting/ltc_parameters.hpp>
+#include <ltc/fitting/moments.hpp>
+#include <ltc/fitting/nelder_mead.hpp>
+#include <ltc/fitting/options.hpp>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace ltc {
+namespace fit {
+
+struct two_lobe_result {
+    std::array<ltc_parameters, 2> lobes;               ///< in their rotated frame
+    std::array<glm::dmat3, 2> m_inv{glm::dmat3(1.0), glm::dmat3(1.0)};  ///< M_i^-1 / M_i^-1[1][1]
+    double share = 0;                                  ///< s: the second lobe's share of the magnitude
+    double magnitude = 0;                              ///< integral of rho cos
+    double fresnel = 0;                                ///< integral of rho cos (1 - V.H)^5
+    double value = 0;                                  ///< the objective at the solution
+    int evaluations = 0;
+};
+
+namespace detail {
+
+/// f, and the balance-heuristic weight over the BRDF's sampler and both lobes' samplers.
+struct mixture_samples {
+    std::vector<double> x, y, z, f, w;
+
+    template <template <typename> class Brdf>
+    void make(const glm::dvec3& V, double alpha, const glm::dmat3& M1, const glm::dmat3& M2, int n) {
+        using B = Brdf<double>;
+        const structured_inverse i1 = invert_structured(M1), i2 = invert_structured(M2);
+        const double count = double(n) * double(n);
+        x.clear(), y.clear(), z.clear(), f.clear(), w.clear();
+        const auto add = [&](const glm::dvec3& L) {
+            const double fv = L.z > 0 ? B::eval(V, L, alpha) : 0.0;
+            const double p = count * (B::pdf(V, L, alpha) + ltc_density(i1.inverse, 1.0 / i1.abs_determinant, L) +
+                                      ltc_density(i2.inverse, 1.0 / i2.abs_determinant, L));
+            if (p > 0 && std::isfinite(p) && std::isfinite(fv))
+                x.push_back(L.x), y.push_back(L.y), z.push_back(L.z), f.push_back(fv), w.push_back(1.0 / p);
+        };
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const glm::dvec2 u((i + 0.5) / n, (j + 0.5) / n);
+                add(B::sample(V, u, alpha));
+                add(normalize_or_zero(M1 * sample_cosine(u)));
+                add(normalize_or_zero(M2 * sample_cosine(u)));
+            }
+    }
+
+    /// Estimates of the integrals of |f - g|^3 and f^3, g = k1 D_1 + k2 D_2 (m_inv_i structured).
+    void l3(const glm::dmat3& m1, double k1, const glm::dmat3& m2, double k2, double& e3, double& f3) const {
+        const auto lobe = [](const glm::dmat3& m, double k, double xs, double ys, double zs) {
+            const double a = m[0][0], b = m[2][0], c = m[1][1], d = m[0][2], e = m[2][2];
+            const double X = a * xs + b * zs, Y = c * ys, Z = d * xs + e * zs;
+            const double l2 = X * X + Y * Y + Z * Z;
+            return k * std::max(Z, 0.0) / (l2 * l2);
+        };
+        const double c1 = k1 * std::abs(m1[1][1] * (m1[0][0] * m1[2][2] - m1[2][0] * m1[0][2])) / pi<double>();
+        const double c2 = k2 * std::abs(m2[1][1] * (m2[0][0] * m2[2][2] - m2[2][0] * m2[0][2])) / pi<double>();
+        e3 = 0, f3 = 0;
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            const double g = lobe(m1, c1, x[i], y[i], z[i]) + lobe(m2, c2, x[i], y[i], z[i]);
+            const double d = std::abs(f[i] - g);
+            e3 += w[i] * d * d * d;
+            f3 += w[i] * f[i] * f[i] * f[i];
+        }
+    }
+};
+
+inline double logistic(double t) { return 1.0 / (1.0 + std::exp(-t)); }
+
+/// Nelder-Mead over the first Dim of the 9 numbers (the others stay as in u0).
+template <std::size_t Dim, typename F>
+nelder_mead_result<9> minimize_padded(const F& objective, const std::array<double, 9>& u0, double step, double tolerance,
+                                      int max_evaluations) {
+    std::array<double, Dim> start{}, steps{};
+    for (std::size_t i = 0; i < Dim; ++i) start[i] = u0[i];
+    steps.fill(step);
+    const auto widen = [&](const std::array<double, Dim>& u) {
+        std::array<double, 9> w = u0;
+        for (std::size_t i = 0; i < Dim; ++i) w[i] = u[i];
+        return w;
+    };
+    const auto r = nelder_mead<Dim>([&](const std::array<double, Dim>& u) { return objective(widen(u)); }, start, steps,
+                                    tolerance, max_evaluations);
+    nelder_mead_result<9> out;
+    out.x = widen(r.x);
+    out.value = r.value;
+    out.evaluations = r.evaluations;
+    return out;
+}
+
+}  // namespace detail
+
+/// Where a two-lobe fit starts: both lobes (their axes are replaced by the node's average
+/// direction) and the second lobe's share.
+struct two_lobe_start {
+    std::array<ltc_parameters, 2> lobes;
+    double share = 0.2;
+};
+
+/// The start from a one-lobe fit (fit_node): lobe 1 as fitted, lobe 2 twice as wide, share 0.2.
+inline two_lobe_start start_from_one_lobe(const ltc_parameters& one) {
+    two_lobe_start s;
+    s.lobes[0] = one;
+    s.lobes[1] = one;
+    s.lobes[1].m11 *= 2.0;
+    s.lobes[1].m22 *= 2.0;
+    s.lobes[1].m13 *= 2.0;
+    return s;
+}
+
+/// The start from a neighbour's two-lobe fit (marching along a table's row).
+inline two_lobe_start start_from(const two_lobe_result& r) {
+    two_lobe_start s;
+    s.lobes = r.lobes;
+    s.share = r.share;
+    return s;
+}
+
+/// Fits the two-lobe node of view cos(theta_v) and roughness alpha from `start`.
+template <template <typename> class Brdf>
+two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_start& start, const options& opt) {
+    const glm::dvec3 V = brdf::view_from_cos(cos_theta);
+    const moments mom = compute_moments<Brdf>(V, alpha, opt.moment_samples);
+    const bool isotropic = cos_theta >= 1.0;
+    const int dims = isotropic ? 1 : 4;
+    const glm::dvec3 axis = isotropic ? glm::dvec3(0, 0, 1) : mom.average_direction;
+
+    two_lobe_result r;
+    r.magnitude = mom.magnitude;
+    r.fresnel = mom.fresnel;
+    r.lobes = start.lobes;
+    for (ltc_parameters& p : r.lobes) {
+        p.axis = axis;
+        if (isotropic) p.m22 = p.m11, p.m13 = p.m31 = 0;
+    }
+    r.share = std::min(std::max(start.share, 1e-6), 1 - 1e-6);
+
+    const integral_targets targets = make_integral_targets<Brdf>(V, alpha, axis, mom.magnitude);
+    std::vector<double> i1(targets.polygons.size()), i2(targets.polygons.size());
+    detail::mixture_samples samples;
+
+    constexpr std::size_t N = 9;
+    using vec = std::array<double, N>;
+    const auto to_vec = [&]() {
+        vec u{};
+        for (int l = 0; l < 2; ++l) detail::to_vector(r.lobes[std::size_t(l)], dims, &u[std::size_t(l * dims)]);
+        u[std::size_t(2 * dims)] = std::log(r.share / (1.0 - r.share));
+        return u;
+    };
+    const auto from_vec = [&](const vec& u, ltc_parameters* p, double& s) {
+        for (int l = 0; l < 2; ++l) p[l] = detail::from_vector(&u[std::size_t(l * dims)], dims, axis);
+        s = detail::logistic(u[std::size_t(2 * dims)]);
+    };
+
+    double step = opt.initial_step;
+    for (int round = 0; round < std::max(1, opt.rounds); ++round) {
+        samples.make<Brdf>(V, alpha, r.lobes[0].matrix(), r.lobes[1].matrix(), opt.error_samples);
+        double e3 = 0, f3 = 1;
+        samples.l3(invert_structured(r.lobes[0].matrix()).inverse, 1 - r.share, invert_structured(r.lobes[1].matrix()).inverse,
+                   r.share, e3, f3);
+        if (!(f3 > 0)) f3 = 1;
+        const auto objective = [&](const vec& u) {
+            ltc_parameters p[2];
+            double s = 0;
+            from_vec(u, p, s);
+            glm::dmat3 mi[2];
+            for (int l = 0; l < 2; ++l) {
+                if (!(p[l].m11 > 0) || !(p[l].m22 > 0) || !(p[l].m11 - p[l].m13 * p[l].m31 > 0) ||
+                    !std::isfinite(p[l].m11) || !std::isfinite(p[l].m22))
+                    return std::numeric_limits<double>::infinity();
+                const structured_inverse inv = invert_structured(p[l].matrix());
+                if (!inv.ok) return std::numeric_limits<double>::infinity();
+                mi[l] = inv.inverse;
+            }
+            const double m = mom.magnitude;
+            ltc_integrals(targets, mi[0], i1.data());
+            ltc_integrals(targets, mi[1], i2.data());
+            const double floor = 0.01 * m;
+            double loss = 0;
+            for (std::size_t k = 0; k < targets.polygons.size(); ++k) {
+                const double e = (m * ((1 - s) * i1[k] + s * i2[k]) - targets.ggx[k]) / (targets.ggx[k] + floor);
+                loss += e * e;
+            }
+            if (!targets.polygons.empty()) loss /= double(targets.polygons.size());
+            double l3 = 0, unused = 0;
+            samples.l3(mi[0], m * (1 - s), mi[1], m * s, l3, unused);
+            const double rel = std::cbrt(l3 / f3);
+            return loss + rel * rel;
+        };
+        const vec u0 = to_vec();
+        const auto res = isotropic ? detail::minimize_padded<3>(objective, u0, step, opt.tolerance, opt.max_evaluations * 5)
+                                   : detail::minimize_padded<N>(objective, u0, step, opt.tolerance, opt.max_evaluations * 5);
+        r.evaluations += res.evaluations;
+        r.value = res.value;
+        from_vec(res.x, r.lobes.data(), r.share);
+        step *= 0.25;
+    }
+    for (int l = 0; l < 2; ++l) r.m_inv[std::size_t(l)] = normalized_inverse(r.lobes[std::size_t(l)].matrix());
+    return r;
+}
+
+/// The shipped two-lobe tables' size (ltc/tables/ggx_two_lobe.hpp): 32 x 32, where the two-lobe
+/// fit's cost (about 4x the one-lobe fit's per node) and its error (examples/ggx_error_report,
+/// section 8) meet.
+inline constexpr int two_lobe_default_size = 32;
+
+/// A size x size table of two-lobe nodes (nodes[a * size + t], as ltc::fit::table).
+struct two_lobe_table {
+    int size = 0;
+    std::vector<two_lobe_result> nodes;
+
+    const two_lobe_result& at(int t, int a) const { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
+
+    /// Two tables of the layout of ltc/shading/table.hpp, one after the other (2 size^2 6
+    /// floats): lobe l's normalized M_l^-1, and the magnitude and Fresnel term times its share
+    /// ((1 - s) for lobe 1, s for lobe 2), so that each is an ordinary ltc_table and the shading
+    /// is the sum of the two lobes' (the shares interpolate linearly, like the magnitude).
+    std::vector<float> packed() const {
+        std::vector<float> d;
+        d.reserve(2 * nodes.size() * channel::count);
+        for (int l = 0; l < 2; ++l)
+            for (const two_lobe_result& n : nodes) {
+                const glm::dmat3& m = n.m_inv[std::size_t(l)];
+                const double w = l == 0 ? 1 - n.share : n.share;
+                d.push_back(float(m[0][0]));
+                d.push_back(float(m[0][2]));
+                d.push_back(float(m[2][0]));
+                d.push_back(float(m[2][2]));
+                d.push_back(float(n.magnitude * w));
+                d.push_back(float(n.fresnel * w));
+            }
+        return d;
+    }
+};
+
+/// Fits a two-lobe table: the normal-incidence nodes in sequence from roughness 1 down to 0 (the
+/// first from the one-lobe fit of its node, each next from the previous one), then each row of
+/// constant roughness from its normal-incidence node towards grazing, each node from its
+/// neighbour; rows in parallel on options::threads threads (the result does not depend on it).
+template <template <typename> class Brdf>
+two_lobe_table fit_two_lobe_table(const options& opt) {
+    if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_two_lobe_table: size must be at least 2");
+    const int n = opt.size;
+    two_lobe_table tab;
+    tab.size = n;
+    tab.nodes.resize(std::size_t(n) * std::size_t(n));
+    const double c0 = node_cos_theta(0, n, opt.cos_theta_min);
+    two_lobe_start start = start_from_one_lobe(fit_node<Brdf>(c0, node_alpha(n - 1, n, opt.alpha_min), {}, opt).parameters);
+    for (int a = n - 1; a >= 0; --a) {
+        tab.nodes[std::size_t(a) * std::size_t(n)] = fit_two_lobes<Brdf>(c0, node_alpha(a, n, opt.alpha_min), start, opt);
+        start = start_from(tab.nodes[std::size_t(a) * std::size_t(n)]);
+    }
+    std::atomic<int> next_row{0};
+    std::mutex mutex;
+    std::exception_ptr failure;
+    const auto worker = [&] {
+        try {
+            for (int a; (a = next_row.fetch_add(1)) < n;) {
+                two_lobe_result* row = &tab.nodes[std::size_t(a) * std::size_t(n)];
+                const double alpha = node_alpha(a, n, opt.alpha_min);
+                for (int t = 1; t < n; ++t)
+                    row[t] = fit_two_lobes<Brdf>(node_cos_theta(t, n, opt.cos_theta_min), alpha, start_from(row[t - 1]), opt);
+            }
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(mutex);
+            if (!failure) failure = std::current_exception();
+            next_row.store(n);
+        }
+    };
+    unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min<unsigned>(threads, unsigned(n));
+    std::vector<std::thread> pool;
+    for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    return tab;
+}
+
+}  // namespace fit
+}  // namespace ltc
