@@ -18,6 +18,7 @@
 #include <ltc/ltc.hpp>
 #include <ltc/shading/clipless.hpp>
 #include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -92,6 +93,10 @@ void run(FuzzedDataProvider& in) {
                                                 ltc::sidedness::two_sided, clip);
         require_finite(r.specular, "GGX specular");
         require_finite(r.diffuse, "GGX diffuse");
+        const auto r2 = ltc::shade_polygon_light_two_lobe(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
+                                                          ltc::sidedness::two_sided, clip);
+        require_finite(r2.specular, "two-lobe GGX specular");
+        require_finite(r2.diffuse, "two-lobe GGX diffuse");
     }
 
     check_distribution<T, ltc::uniform_sphere<T>>(pv, n, m, use_inverse, u);

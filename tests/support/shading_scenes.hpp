@@ -90,4 +90,16 @@ inline std::vector<dvec3> local_light(const scene& sc) {
 /// where relative differences mean nothing) are compared absolutely.
 inline double rel_diff(double a, double b) { return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-2}); }
 
+/// A rectangle of half-sizes a x b at distance 1 in the direction (azimuth, elevation) in
+/// degrees, facing the origin (front face: clockwise as seen from it).
+inline std::vector<dvec3> facing_rectangle(double azimuth_deg, double elevation_deg, double a, double b) {
+    const double az = azimuth_deg * pi / 180, el = elevation_deg * pi / 180;
+    const dvec3 c(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+    const dvec3 e1 = std::abs(c.z) > 0.999 ? dvec3(0, 1, 0) : glm::normalize(glm::cross(dvec3(0, 0, 1), c));
+    const dvec3 e2 = glm::cross(c, e1);
+    std::vector<dvec3> v = {c - a * e1 - b * e2, c + a * e1 - b * e2, c + a * e1 + b * e2, c - a * e1 + b * e2};
+    if (glm::dot(v[0], glm::cross(v[1] - v[0], v[2] - v[0])) < 0) std::reverse(v.begin(), v.end());
+    return v;
+}
+
 }  // namespace ltc_test::shading_checks

@@ -1,0 +1,51 @@
+// ltc/shading/two_lobe_polygon_light.hpp -- shading a point with a constant-radiance polygonal
+// light with the opt-in two-lobe GGX table (ltc/shading/ggx_two_lobe_fetch.hpp): the specular
+// term is the sum of both lobes' exact integrals (paper eq. 3 for each), the diffuse term as in
+// ltc/shading/polygon_light.hpp.
+//
+//   #include <ltc/shading/two_lobe_polygon_light.hpp>
+//   ltc::polygon_light_result<float> r = ltc::shade_polygon_light_two_lobe(
+//       P, N, V, roughness, F0, albedo, radiance, vertices, n, ltc::sidedness::one_sided);
+//
+// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light; about
+// twice its cost (one more polygon transform, clip and edge sum): README, "Shading polygonal
+// lights with GGX", measured by benchmarks/bench_shading.cpp.
+#pragma once
+
+#include <ltc/shading/ggx_two_lobe_fetch.hpp>
+#include <ltc/shading/polygon_light.hpp>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstddef>
+
+namespace ltc {
+
+/// Shading with explicit coefficients for both lobes (m_inv in the local frame of `frame`; each
+/// lobe's magnitude and fresnel carrying its share, as ggx_two_lobe::fetch returns them).
+template <typename Policy = edge_policy::automatic, typename T>
+inline polygon_light_result<T> shade_polygon_light_two_lobe(
+    const shading_frame<T>& frame, const std::array<ltc_coefficients<T>, 2>& lobes, const glm::vec<3, T>& P,
+    const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
+    const glm::vec<3, T>* vertices, std::size_t n, sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
+    polygon_light_result<T> r = shade_polygon_light<Policy>(frame, lobes[0], P, F0, albedo, radiance, vertices, n, side, clip);
+    const polygon_light_integrals<T> second = integrate_polygon_light<Policy>(frame, lobes[1].m_inv, P, vertices, n, clip);
+    r.specular += radiance * brdf_scale(F0, lobes[1]) * apply_sidedness(second.ltc, side);
+    return r;
+}
+
+/// Shading with the two-lobe GGX table: cos theta_v from N and V, both lobes from
+/// ggx_two_lobe::fetch(cos theta_v, roughness) (alpha = roughness^2).
+template <typename Policy = edge_policy::automatic, typename T>
+inline polygon_light_result<T> shade_polygon_light_two_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>& N,
+                                                            const glm::vec<3, T>& V, T roughness, const glm::vec<3, T>& F0,
+                                                            const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
+                                                            const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
+                                                            horizon_clipping clip = horizon_clipping::ltc_space) {
+    const shading_frame<T> frame = make_shading_frame(N, V);
+    return shade_polygon_light_two_lobe<Policy>(frame, ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness), P, F0, albedo,
+                                                radiance, vertices, n, side, clip);
+}
+
+}  // namespace ltc

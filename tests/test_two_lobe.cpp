@@ -1,0 +1,175 @@
+// The opt-in two-lobe GGX table (ltc/shading/ggx_two_lobe_fetch.hpp) and its shading
+// (ltc/shading/two_lobe_polygon_light.hpp): the table's entries, its shares adding up to the
+// magnitude, the shading's identities with the one-lobe shading, float against double, bad input,
+// and the two lobes against the Monte Carlo GGX ground truth where one lobe is weakest.
+#include <catch2/catch.hpp>
+
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/fit_two_lobes.hpp>
+#include <ltc/reference/ground_truth.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
+
+#include "support/shading_scenes.hpp"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle
+
+TEST_CASE("two-lobe table: finite entries, invertible lobes, shares adding up to the magnitude", "[two_lobe]") {
+    const int n = ltc::ggx_two_lobe::size;
+    REQUIRE(n == ltc::fit::two_lobe_default_size);
+    for (int l = 0; l < 2; ++l) {
+        const ltc::ltc_table t = ltc::ggx_two_lobe::lobe_table(l);
+        for (int a = 0; a < n; ++a)
+            for (int u = 0; u < n; ++u) {
+                CAPTURE(l, a, u);
+                glm::dmat3 m(0.0);
+                m[0][0] = t.node(u, a, ltc::channel::m_inv_00);
+                m[0][2] = t.node(u, a, ltc::channel::m_inv_02);
+                m[2][0] = t.node(u, a, ltc::channel::m_inv_20);
+                m[2][2] = t.node(u, a, ltc::channel::m_inv_22);
+                m[1][1] = 1;
+                const double det = glm::determinant(m);
+                CHECK(std::isfinite(det));
+                CHECK(det != 0);
+                CHECK(t.node(u, a, ltc::channel::magnitude) >= 0);
+                CHECK(t.node(u, a, ltc::channel::fresnel) >= 0);
+            }
+    }
+    // At the corners of the parameter square the 32 x 32 and the 64 x 64 grids share their nodes
+    // and both fits take the magnitude and Fresnel term from the same moments: the lobes'
+    // float(m (1 - s)) + float(m s) is float(m) up to three float roundings, at most
+    // 2^-24 (m (1 - s) + m s) + 2^-24 m = 2^-23 m.
+    for (const double c : {0.0, 1.0})
+        for (const double r : {0.0, 1.0}) {
+            const auto two = ltc::ggx_two_lobe::fetch(c, r);
+            const auto one = ltc::ggx::fetch(c, r);
+            CAPTURE(c, r, two[0].magnitude, two[1].magnitude, one.magnitude);
+            CHECK(std::abs(two[0].magnitude + two[1].magnitude - one.magnitude) <= std::ldexp(one.magnitude, -23));
+            CHECK(std::abs(two[0].fresnel + two[1].fresnel - one.fresnel) <= std::ldexp(one.fresnel, -23));
+        }
+}
+
+TEST_CASE("two-lobe shading: the one-lobe diffuse term, lobes that add, float against double", "[two_lobe]") {
+    const std::vector<dvec3> quad = facing_rectangle(200, 25, 0.6, 0.3);
+    const dvec3 P(0), N(0, 0, 1), F0(0.04, 0.5, 1.0), albedo(0.5), radiance(2.0);
+    const ltc::horizon_clipping modes[] = {ltc::horizon_clipping::ltc_space, ltc::horizon_clipping::shading_first,
+                                           ltc::horizon_clipping::sphere_analytic};
+    for (const double theta : {0.0, 40.0, 70.0, 85.0})
+        for (const double r : {0.1, 0.35, 0.8})
+            for (const auto mode : modes) {
+                CAPTURE(theta, r, int(mode));
+                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
+                const auto two = ltc::shade_polygon_light_two_lobe(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
+                                                                   ltc::sidedness::one_sided, mode);
+                const auto one = ltc::shade_polygon_light(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
+                                                          ltc::sidedness::one_sided, mode);
+                // The diffuse term is the one-lobe shading's, bit for bit.
+                CHECK(two.diffuse == one.diffuse);
+                // The specular term is the sum of each lobe shaded alone (the other's share 0).
+                const auto frame = ltc::make_shading_frame(N, V);
+                auto lobes = ltc::ggx_two_lobe::fetch(frame.cos_theta_v, r);
+                dvec3 sum(0);
+                for (int l = 0; l < 2; ++l)
+                    sum += ltc::shade_polygon_light(frame, lobes[std::size_t(l)], P, F0, albedo, radiance, quad.data(), 4,
+                                                    ltc::sidedness::one_sided, mode)
+                               .specular;
+                CHECK(two.specular == sum);
+                CHECK(two.specular.x >= 0);
+                // float against double: the one-lobe shading's bound (test_shading_ggx.cpp) per lobe.
+                glm::vec3 qf[4];
+                for (int i = 0; i < 4; ++i) qf[i] = glm::vec3(quad[std::size_t(i)]);
+                const auto f = ltc::shade_polygon_light_two_lobe(glm::vec3(P), glm::vec3(N), glm::vec3(V), float(r),
+                                                                 glm::vec3(F0), glm::vec3(albedo), glm::vec3(radiance), qf, 4,
+                                                                 ltc::sidedness::one_sided, mode);
+                CHECK(f.specular.y == Approx(two.specular.y).epsilon(4e-5).margin(1e-7));
+                CHECK(f.diffuse.x == Approx(two.diffuse.x).epsilon(2e-6).margin(1e-9));
+            }
+}
+
+TEST_CASE("two-lobe shading: bad input gives finite results", "[two_lobe][bad_input]") {
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const std::vector<dvec3> quad = facing_rectangle(180, 40, 0.5, 0.5);
+    const dvec3 N(0, 0, 1), V = glm::normalize(dvec3(0.5, 0, 0.5));
+    const auto finite = [](const ltc::polygon_light_result<double>& r) {
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(r.specular[k]) || !std::isfinite(r.diffuse[k])) return false;
+        return true;
+    };
+    for (const double r : {nan, inf, -inf, -1.0, 2.0, 0.0})
+        CHECK(finite(ltc::shade_polygon_light_two_lobe(dvec3(0), N, V, r, dvec3(1), dvec3(1), dvec3(1), quad.data(), 4,
+                                                       ltc::sidedness::one_sided)));
+    for (const dvec3 v : {dvec3(nan, 0, 1), dvec3(0), dvec3(1, 0, -1), dvec3(inf, 0, 0)})
+        CHECK(finite(ltc::shade_polygon_light_two_lobe(dvec3(0), N, v, 0.5, dvec3(1), dvec3(1), dvec3(1), quad.data(), 4,
+                                                       ltc::sidedness::one_sided)));
+    // n < 3, N = 0 and a vertex at the shading point: 0, as for one lobe.
+    const dvec3 at_p[4] = {dvec3(0), quad[1], quad[2], quad[3]};
+    for (const auto& r : {ltc::shade_polygon_light_two_lobe(dvec3(0), N, V, 0.5, dvec3(1), dvec3(1), dvec3(1), quad.data(), 2,
+                                                            ltc::sidedness::one_sided),
+                          ltc::shade_polygon_light_two_lobe(dvec3(0), dvec3(0), V, 0.5, dvec3(1), dvec3(1), dvec3(1),
+                                                            quad.data(), 4, ltc::sidedness::one_sided),
+                          ltc::shade_polygon_light_two_lobe(dvec3(0), N, V, 0.5, dvec3(1), dvec3(1), dvec3(1), at_p, 4,
+                                                            ltc::sidedness::one_sided)}) {
+        CHECK(r.specular == dvec3(0));
+        CHECK(r.diffuse == dvec3(0));
+    }
+}
+
+TEST_CASE("two lobes against the Monte Carlo GGX ground truth at grazing views", "[two_lobe][ground_truth]") {
+    // Where one lobe is weakest (examples/ggx_error_report: theta_v = 80 deg, roughness 0.25-0.5,
+    // lights off the lobe's peak): theta_v in {70, 80} deg, roughness in {0.3, 0.5}, and three
+    // 0.5 x 0.25 rectangles facing the origin at distance 1: "mirror" (azimuth 180 deg, elevation
+    // 90 - theta_v), "zenith" (elevation 80 deg, azimuth 0) and "side" (azimuth 90, elevation 30).
+    // Ground truth: ltc::ground_truth::integrate, MIS, 2^16 iterations, fixed seeds (relative
+    // standard errors below 0.5%, checked). These are off the report's grid (other roughnesses,
+    // view angles and lights). Measured with the shipped tables and these seeds, signed errors
+    // one lobe / two lobes:
+    //                   mirror          zenith           side
+    //   70 deg, 0.3   -2.5 / +0.3    +123.1 / +33.2   -83.7 / -62.8
+    //   70 deg, 0.5   +2.0 / -3.5     +62.9 /  -7.0   -70.0 / -20.9
+    //   80 deg, 0.3   -4.8 / +8.8    +224.8 /  +8.3   -95.9 / -87.9
+    //   80 deg, 0.5  +13.9 / +3.5     +66.3 /  -9.8   -87.8 / -25.8
+    // Mean |error| 69.8% / 22.7%, worst 224.8% / 87.9%: the second lobe cuts the tails' error by
+    // 3x on average, but a small light at the side of a sharp grazing lobe stays far off, and a
+    // mirror light can get worse (80 deg, 0.3). Bounds: the two-lobe figures rounded up in
+    // their second digit (new tables or seeds need new figures, from this test's output).
+    double sum1 = 0, sum2 = 0, worst1 = 0, worst2 = 0;
+    int count = 0;
+    for (const double theta : {70.0, 80.0})
+        for (const double r : {0.3, 0.5}) {
+            const std::vector<dvec3> lights[] = {facing_rectangle(180, 90 - theta, 0.5, 0.25), facing_rectangle(0, 80, 0.5, 0.25),
+                                                 facing_rectangle(90, 30, 0.5, 0.25)};
+            for (const auto& L : lights) {
+                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
+                ltc::ground_truth::options opt;
+                opt.samples = 1u << 16;
+                opt.seed = 7000 + std::uint64_t(count);
+                const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
+                const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(), 4,
+                                                          ltc::sidedness::one_sided);
+                const auto two = ltc::shade_polygon_light_two_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
+                                                                   L.data(), 4, ltc::sidedness::one_sided);
+                const double e1 = std::abs(one.specular.x - gt.mean) / gt.mean;
+                const double e2 = std::abs(two.specular.x - gt.mean) / gt.mean;
+                CAPTURE(theta, r, count % 3, gt.mean, gt.standard_error, one.specular.x, two.specular.x, e1, e2);
+                CHECK(gt.standard_error <= 0.005 * gt.mean);
+                sum1 += e1, sum2 += e2;
+                worst1 = std::max(worst1, e1), worst2 = std::max(worst2, e2);
+                ++count;
+            }
+        }
+    CAPTURE(sum1 / count, sum2 / count, worst1, worst2);
+    WARN("one lobe: mean " << 100 * sum1 / count << "%, worst " << 100 * worst1 << "%; two lobes: mean " << 100 * sum2 / count
+                           << "%, worst " << 100 * worst2 << "%");
+    CHECK(sum2 / count <= 0.23);
+    CHECK(worst2 <= 0.88);
+    CHECK(sum2 < 0.5 * sum1);
+}
