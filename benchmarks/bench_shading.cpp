@@ -2,7 +2,9 @@
 // the reference shader's shading (reference_shading.hpp: frame, two bilinear fetches, two
 // 16-case-clipped integrals), ltc::shade_polygon_light point by point, and
 // ltc::batch::shade_polygon_light (one point per SIMD lane); and one point shaded by 4096 quad
-// lights (ltc::batch::shade_quad_lights). Items/s plus, as counters, the maximum absolute and
+// lights (ltc::batch::shade_quad_lights); and ltc::shade_polygon_light_two_lobe point by point
+// (the opt-in two-lobe table: its cost against BM_library_scalar's, no error counters since it is
+// another approximation). Items/s plus, as counters, the maximum absolute and
 // relative error of specular + diffuse (red) against ltc::shade_polygon_light in double with the
 // exact edge policy: the precision each float path loses, not the LTC approximation's own error.
 //
@@ -16,6 +18,7 @@
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -124,6 +127,23 @@ void BM_library_scalar(benchmark::State& state) {
     report_errors(state, red);
 }
 
+template <typename Policy>
+void BM_library_scalar_two_lobe(benchmark::State& state) {
+    const scene& s = the_scene();
+    std::vector<float> red(kItems);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < kItems; ++i) {
+            const auto r = ltc::shade_polygon_light_two_lobe<Policy>(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i],
+                                                                     s.vec(10, i), s.vec(13, i), s.radiance, s.light, 4,
+                                                                     ltc::sidedness::two_sided);
+            red[i] = r.specular.x + r.diffuse.x;
+        }
+        benchmark::DoNotOptimize(red.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+}
+
 struct outputs {
     std::vector<float> c[6];
     outputs() {
@@ -194,6 +214,8 @@ using ltc::batch::isa;
 BENCHMARK(BM_reference_shading);
 BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::minimax_rational);
+BENCHMARK_TEMPLATE(BM_library_scalar_two_lobe, ltc::edge_policy::exact);
+BENCHMARK_TEMPLATE(BM_library_scalar_two_lobe, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);

@@ -3,7 +3,10 @@
 // ltc/fitting/integral_objective.hpp, their sum; each optionally with a fitted magnitude scale),
 // their fitting time, against the same ground truth and over the same significant
 // configurations as section 1 (the significance threshold uses the shipped table's albedo, so
-// that a fitted magnitude does not change the set).
+// that a fitted magnitude does not change the set). Also two-lobe rows (issue 16): the shipped
+// two-lobe table (ltc/shading/ggx_two_lobe_fetch.hpp), its fit timed here ("two-lobe-fit"), and
+// "cells": per (theta_v, roughness) cell, the one- and two-lobe fits at the cell's exact view
+// and roughness (no table: what any table resolution or spacing could reach at best).
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "report.hpp"
@@ -11,7 +14,9 @@
 
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
+#include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/ggx_two_lobe_fetch.hpp>
 #include <ltc/shading/table.hpp>
 
 #include <glm/glm.hpp>
@@ -80,6 +85,65 @@ evaluation oracle(const std::vector<config>& grid, const evaluation& ev) {
     return e;
 }
 
+/// Per (theta_v, roughness) cell of the grid, fits at the cell's exact view and roughness (no
+/// table, no interpolation): the one-lobe L3 fit (marched from normal incidence as fit_table does)
+/// and the two-lobe fit started from it. lobes = 1 or 2.
+evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int lobes, double& seconds) {
+    evaluation e = ev;
+    const auto t0 = std::chrono::steady_clock::now();
+    ltc::fit::options fo;
+    for (int r = 0; r < 5; ++r) {
+        const double alpha = std::max(roughnesses[r] * roughnesses[r], fo.alpha_min);
+        ltc::fit::ltc_parameters start;
+        start.m11 = start.m22 = alpha;
+        for (int t = 0; t < 4; ++t) {
+            const double c = std::max(std::cos(thetas[t] * deg), fo.cos_theta_min);
+            const double x = std::sqrt(1 - c);
+            const int steps = std::max(1, int(std::ceil(x * 48)));
+            ltc::fit::node_result node = ltc::fit::fit_node<ltc::brdf::ggx>(1.0, alpha, start, fo);
+            for (int k = 1; k <= steps && t > 0; ++k) {
+                const double xk = x * k / steps;
+                node = ltc::fit::fit_node<ltc::brdf::ggx>(std::max(1 - xk * xk, fo.cos_theta_min), alpha, node.parameters, fo);
+            }
+            std::array<ltc::ltc_coefficients<double>, 2> lobe;
+            lobe[0].m_inv = node.m_inv;
+            lobe[0].magnitude = node.magnitude;
+            lobe[1].magnitude = 0;
+            if (lobes == 2) {
+                const auto two = ltc::fit::fit_two_lobes<ltc::brdf::ggx>(c, alpha, ltc::fit::start_from_one_lobe(node.parameters), fo);
+                for (int l = 0; l < 2; ++l) lobe[std::size_t(l)].m_inv = two.m_inv[std::size_t(l)];
+                lobe[0].magnitude = two.magnitude * (1 - two.share);
+                lobe[1].magnitude = two.magnitude * two.share;
+            }
+            for (std::size_t i = 0; i < grid.size(); ++i) {
+                if (grid[i].theta != t || grid[i].rough != r) continue;
+                double v = 0;
+                for (int l = 0; l < lobes; ++l) {
+                    const auto cf = lobe[std::size_t(l)];
+                    const fetch_fn f = [&](double, double) { return cf; };
+                    v += ltc_estimate(grid[i], f, exact);
+                }
+                e.value[exact][i] = v;
+            }
+        }
+    }
+    seconds = seconds_since(t0);
+    return e;
+}
+
+/// Both lobes' estimates summed (ltc/shading/ggx_two_lobe_fetch.hpp's layout: each lobe an
+/// ordinary table whose magnitude carries its share), over the same significant set.
+evaluation evaluate_two_lobes(const std::vector<config>& grid, const evaluation& ev, const ltc::ltc_table& lobe1,
+                              const ltc::ltc_table& lobe2) {
+    const fetch_fn f1 = [&](double c, double r) { return lobe1.fetch<double>(c, r); };
+    const fetch_fn f2 = [&](double c, double r) { return lobe2.fetch<double>(c, r); };
+    evaluation e = evaluate(grid, f1, false);
+    const evaluation e2 = evaluate(grid, f2, false);
+    for (std::size_t i = 0; i < grid.size(); ++i) e.value[exact][i] += e2.value[exact][i];
+    e.albedo = ev.albedo;
+    return e;
+}
+
 }  // namespace
 
 void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev, int size,
@@ -93,7 +157,32 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
                 "by roughness: mean");
     print_row("shipped (L3)", "-", grid, ev);
     print_row("oracle (bound)", "-", grid, oracle(grid, ev));
+    print_row("two-lobe table", "-", grid,
+              evaluate_two_lobes(grid, ev, ltc::ggx_two_lobe::lobe_table(0), ltc::ggx_two_lobe::lobe_table(1)));
     for (const std::string& name : objectives) {
+        if (name == "cells") {
+            double secs = 0;
+            char time[32];
+            const evaluation e1 = cell_fits(grid, ev, 1, secs);
+            std::snprintf(time, sizeof time, "%.2fs", secs);
+            print_row("cells, one lobe", time, grid, e1);
+            const evaluation e2 = cell_fits(grid, ev, 2, secs);
+            std::snprintf(time, sizeof time, "%.2fs", secs);
+            print_row("cells, two lobes", time, grid, e2);
+            continue;
+        }
+        if (name == "two-lobe-fit") {  // the shipped two-lobe table's fit, timed here
+            ltc::fit::options fo;
+            fo.size = ltc::fit::two_lobe_default_size;
+            fo.threads = threads;
+            const auto t0 = std::chrono::steady_clock::now();
+            const std::vector<float> data = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(fo).packed();
+            char time[32];
+            std::snprintf(time, sizeof time, "%.2fs", seconds_since(t0));
+            const ltc::ltc_table lobe1(data.data(), fo.size, fo.size), lobe2(data.data() + data.size() / 2, fo.size, fo.size);
+            print_row("two lobes, 32x32", time, grid, evaluate_two_lobes(grid, ev, lobe1, lobe2));
+            continue;
+        }
         ltc::fit::options fo;
         fo.size = size;
         fo.threads = threads;
