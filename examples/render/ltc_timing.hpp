@@ -1,7 +1,9 @@
 // render/ltc_timing.hpp -- the LTC render of the polygonal lights, timed (each part the best of 5
 // runs: it takes milliseconds): point by point, and a row of pixels at a time through the batch
 // API (SIMD lanes), with the largest difference between the two; and the printed LTC times (with
-// the textured light's, by each method with --textured-method all).
+// the textured light's, by each method with --textured-method all). With --lobes 2 the point-by-
+// point render uses the two-lobe table and the batch part is left out (the batch API has the
+// one-lobe table only: its difference would be the second lobe's, not the batch's).
 #pragma once
 
 #include "camera.hpp"
@@ -22,28 +24,31 @@ namespace render {
 
 /// The polygonal lights' LTC render and its times.
 struct ltc_timing {
+    int lobes = 1;  // --lobes: the LTC table of the polygonal lights
     std::vector<dvec3> poly;  // point by point: the polygonal lights (and their emitters)
     double seconds = INFINITY;  // point by point, best of 5
-    double batch_seconds = INFINITY;  // through ltc::batch::shade_polygon_light, best of 5
+    double batch_seconds = INFINITY;  // through ltc::batch::shade_polygon_light, best of 5 (one lobe only)
     double batch_diff = 0;  // largest difference of a channel, batch against point by point
-    double peak = 0;  // largest floor value of a channel, point by point
+    double peak = 0;  // largest floor value of a channel, point by point (with the batch part)
 };
 
 inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hit>& hits, int W, int H,
-                                      unsigned threads) {
+                                      unsigned threads, int lobes) {
     const std::size_t count = static_cast<std::size_t>(W) * H;
     ltc_timing t;
+    t.lobes = lobes;
     t.poly.resize(count);
     for (int run = 0; run < 5; ++run) {
         const auto t0 = clock_type::now();
         for_each_row(H, threads, [&](int y) {
             for (int x = 0; x < W; ++x) {
                 const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                t.poly[i] = dvec3(shade_ltc(s, hits[i]));
+                t.poly[i] = dvec3(shade_ltc(s, hits[i], lobes));
             }
         });
         t.seconds = std::min(t.seconds, seconds_since(t0));
     }
+    if (lobes != 1) return t;  // the batch API has the one-lobe table only
     // The same polygonal lights a row of pixels at a time through the batch API (SIMD lanes).
     std::vector<dvec3> ltc_batch(count);
     for (int run = 0; run < 5; ++run) {
@@ -65,29 +70,35 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
 }
 
 /// Prints the LTC render's times: in all (the polygonal lights and, with it, the textured light
-/// of ltc.png, named by `method_note`), through the batch API, and with more than one run
-/// (--textured-method all) the textured light by each method.
+/// of ltc.png, named by `method_note`), through the batch API (one lobe only: with --lobes 2 a
+/// line saying so), and with more than one run (--textured-method all) the textured light by
+/// each method.
 inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vector<textured_run>& runs,
                             const std::string& method_note, std::size_t floor_pixels, unsigned threads) {
     const double ltc_seconds = t.seconds, ltc_tex_seconds = textured_seconds(runs);
     if (!s.textured) {
-        std::printf("LTC render:       %9.4f s  (best of 5; %.0f ns of one thread per floor pixel and light)\n",
-                    ltc_seconds,
-                    ltc_seconds * 1e9 * threads / (static_cast<double>(floor_pixels) * s.lights.size()));
+        std::printf("LTC render:       %9.4f s  (best of 5; %.0f ns of one thread per floor pixel and light%s)\n",
+                    ltc_seconds, ltc_seconds * 1e9 * threads / (static_cast<double>(floor_pixels) * s.lights.size()),
+                    lobes_note(t.lobes));
     } else {
-        std::printf("LTC render:       %9.4f s  (best of 5 of each part: polygonal lights %.4f s, %.0f ns of one "
+        std::printf("LTC render:       %9.4f s  (best of 5 of each part: polygonal lights%s %.4f s, %.0f ns of one "
                     "thread per floor pixel and light;\n"
                     "                                textured light%s %.4f s, %.0f ns per floor pixel)\n",
-                    ltc_seconds + ltc_tex_seconds, ltc_seconds,
+                    ltc_seconds + ltc_tex_seconds, lobes_note(t.lobes), ltc_seconds,
                     ltc_seconds * 1e9 * threads / (static_cast<double>(floor_pixels) * s.lights.size()),
                     method_note.c_str(), ltc_tex_seconds,
                     ltc_tex_seconds * 1e9 * threads / static_cast<double>(floor_pixels));
     }
 
-    std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light: %.1fx as "
-                "fast;\n                                largest difference to the point-by-point render %.1e, floor "
-                "values up to %.2f)\n",
-                t.batch_seconds, ltc_seconds / t.batch_seconds, t.batch_diff, t.peak);
+    if (t.lobes != 1)
+        std::printf("LTC render, batch: left out with --lobes %d (ltc::batch::shade_polygon_light has the one-lobe "
+                    "table only)\n",
+                    t.lobes);
+    else
+        std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light: %.1fx "
+                    "as fast;\n                                largest difference to the point-by-point render %.1e, "
+                    "floor values up to %.2f)\n",
+                    t.batch_seconds, ltc_seconds / t.batch_seconds, t.batch_diff, t.peak);
     if (runs.size() > 1) print_method_times(runs, floor_pixels, threads);
 }
 

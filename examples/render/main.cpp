@@ -2,7 +2,8 @@
 //
 //   render [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]
 //          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]
-//          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--shapes] [--help]
+//          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--lobes 1|2]
+//          [--shapes] [--help]
 //
 // The scene (z up): a tiled ground plane seen by a pinhole camera 2.8 units above it, lit by two
 // one-sided, constant-radiance polygonal lights standing behind the floor, facing the camera and
@@ -46,6 +47,13 @@
 //                                 exact integral of the texel-constant texture once every cell
 //                                 is a texel, and converging to it as the budget grows;
 //                    all          the three (below). float.
+//                  With --lobes 2 the polygonal lights by ltc::shade_polygon_light_two_lobe instead:
+//                  the opt-in two-lobe GGX table, the sum of two exactly integrated lobes (same
+//                  arguments, diffuse term and Fresnel; about twice the cost). The textured light
+//                  and the --shapes lights stay as they are (one lobe). The images keep their
+//                  names (run it with another --out to keep the default run's): ltc.png and
+//                  error.png are then the two-lobe render's; reference.png and textured_error.png
+//                  do not change.
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
 //                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
 //                  (BRDF sampling of visible normals + uniform spherical-polygon sampling, balance
@@ -119,6 +127,12 @@
 // three. The other lines are fetch's. With all, or one method other than fetch, the LTC time
 // and the headings name the method of ltc.png ("textured light by exact_cells (64 cells)"); the
 // default run's lines are as they were before --textured-method.
+// With --lobes 2 the LTC time, the reference / LTC ratio and the statistics of all lights and of
+// the polygonal lights alone (overall lines and per-tile means) are those of the two-lobe render:
+// a line after the scene's says so, and the LTC time and the headings say "polygonal lights with
+// two lobes"; the batch timing is left out (ltc::batch::shade_polygon_light has the one-lobe
+// table only: its difference to the point-by-point render would be the second lobe's). The
+// default run's lines are as they were before --lobes.
 // --shapes (shapes.hpp, shapes_render.hpp): after the rest, unchanged, a disk, a sphere and a tube
 // light alone on the floor: shapes_ltc.png, shapes_reference.png, shapes_error.png, statistics.
 // Exit status 0, or 1 if an image could not be written or read or a value was not finite, 2
@@ -207,6 +221,8 @@ int main(int argc, char** argv) {
                     "(%d levels)\n",
                     opt.texture.empty() ? "procedural stained glass" : opt.texture.c_str(), 2.0 * tex->half_width,
                     2.0 * tex->half_height, opt.texture_radiance, prefilter_seconds, tex->prefiltered->level_count());
+    if (opt.lobes == 2)
+        std::printf("polygonal lights: the two-lobe GGX table (--lobes 2: ltc::shade_polygon_light_two_lobe)\n");
 
     // The textured light's LTC render by each method of --textured-method (one, or all three
     // with "all"); the first one's is the textured light of ltc.png, error.png and
@@ -216,7 +232,7 @@ int main(int argc, char** argv) {
     const std::string note = method_note(runs);
 
     // LTC render: each part timed as the best of 5 runs (it takes milliseconds).
-    ltc_timing lt = render_ltc_polygons(s, hits, W, H, opt.threads);
+    ltc_timing lt = render_ltc_polygons(s, hits, W, H, opt.threads, opt.lobes);
     std::vector<dvec3>& ltc_poly = lt.poly;
     render_textured_runs(s, hits, W, H, opt.threads, runs);
     print_ltc_times(s, lt, runs, note, floor_pixels, opt.threads);

@@ -21,6 +21,10 @@ inline const char* method_name(ltc::textured_method m) {
     }
 }
 
+/// " with two lobes" after "polygonal lights" where --lobes 2 shades them (the default run's lines
+/// are left as they were).
+inline const char* lobes_note(int lobes) { return lobes == 2 ? " with two lobes" : ""; }
+
 struct options : ltc_examples::image_options {  // --width, --height, --threads, --out, --seed, --exposure
     options() : image_options(256, 160) {}
     int spp = 2048;  // MIS iterations per pixel, light and integral
@@ -32,13 +36,17 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<ltc::textured_method> textured_methods{ltc::textured_method::fetch};
     std::size_t cells = 64;  // --cells: exact_cells' budget (ltc::cell_budget::max_cells)
     bool shapes = false;     // --shapes: the disk, sphere and tube lights' section (shapes_render.hpp)
+    // --lobes: the LTC table of the polygonal lights in ltc.png, 1 (ltc::shade_polygon_light) or 2
+    // (ltc::shade_polygon_light_two_lobe); the textured light and the --shapes lights keep one lobe.
+    int lobes = 1;
 };
 
 inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]\n"
         "          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]\n"
-        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--shapes] [--help]\n"
+        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--lobes 1|2]\n"
+        "          [--shapes] [--help]\n"
         "\n"
         "Renders a tiled floor (GGX dielectric, gold and copper; roughness 0.1 .. 0.9) lit by a\n"
         "rotated rectangular light, a pentagonal light and, between them, a textured quad light (a\n"
@@ -100,6 +108,14 @@ inline void print_help(const char* argv0) {
         "                     all          the three, each timed and measured against the same\n"
         "                                  reference (computed once)\n"
         "  --cells N        exact_cells' budget: adaptive cells at most (default 64; at least 1)\n"
+        "  --lobes L        the LTC table of the two polygonal lights in ltc.png: 1, the GGX table\n"
+        "                   (ltc::shade_polygon_light; the default), or 2, the opt-in two-lobe GGX\n"
+        "                   table (ltc::shade_polygon_light_two_lobe: the sum of two exactly integrated\n"
+        "                   lobes, about twice the cost). The textured light and the --shapes lights\n"
+        "                   stay as they are (one lobe). The images keep their names (give another\n"
+        "                   --out to keep both runs'); the LTC time, error images and statistics are\n"
+        "                   then those of the two-lobe render, and the batch timing is left out\n"
+        "                   (ltc::batch::shade_polygon_light has the one-lobe table only)\n"
         "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"
         "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
         "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"
@@ -146,6 +162,9 @@ inline int parse_args(int argc, char** argv, options& o) {
         } else if (a == "--cells") {
             if (!v.integer_in(1, 1e7)) return option_status::bad;
             o.cells = static_cast<std::size_t>(v.number);
+        } else if (a == "--lobes") {
+            if (!v.integer_in(1, 2)) return option_status::bad;
+            o.lobes = static_cast<int>(v.number);
         } else if (a == "--texture-radiance") {
             if (!v.is_number || !(v.number >= 0) || v.number > 1e6) return option_status::bad;
             o.texture_radiance = v.number;

@@ -2,7 +2,7 @@
 // reference: error.png and the statistics of all lights; with the textured light also those of
 // the polygonal lights alone and of the textured light alone (textured_error.png), and with
 // --textured-method all those of each method (textured_error_<method>.png), then the methods
-// side by side.
+// side by side. With --lobes 2 the headings say that the polygonal lights have two lobes.
 #pragma once
 
 #include "camera.hpp"
@@ -51,10 +51,12 @@ inline bool report_errors(const scene& s, const std::vector<pixel_hit>& hits, co
                  ok;
     }
     const error_stats poly_stats = measure_error(hits, ltc_poly, ref.poly, ref.var_poly, floor, rgb);
-    std::printf("\n=== all lights (ltc.png, reference.png, error.png%s%s) ===\n",
+    std::printf("\n=== all lights (ltc.png, reference.png, error.png%s%s%s%s) ===\n",
+                opt.lobes == 1 ? "" : "; the polygonal lights", lobes_note(opt.lobes),
                 method_note.empty() ? "" : "; the textured light", method_note.c_str());
     print_error(s, all, floor);
-    std::printf("\n=== the polygonal lights alone (rectangle + pentagon: the statistics of --no-texture) ===\n");
+    std::printf("\n=== the polygonal lights alone%s (rectangle + pentagon: the statistics of --no-texture%s) ===\n",
+                lobes_note(opt.lobes), opt.lobes == 1 ? "" : " --lobes 2");
     print_error(s, poly_stats, floor);
     if (!compare) {
         std::printf("\n=== the textured light alone%s (its contribution to the floor: textured_error.png) ===\n",

@@ -1,6 +1,7 @@
 // render/shade_ltc.hpp -- the LTC render of one pixel (float, a renderer's path): the polygonal
 // lights with ltc::shade_polygon_light (or a row of pixels at once with
-// ltc::batch::shade_polygon_light), the textured light with ltc::shade_textured_quad_light
+// ltc::batch::shade_polygon_light; with --lobes 2 with ltc::shade_polygon_light_two_lobe, the
+// two-lobe table, point by point only), the textured light with ltc::shade_textured_quad_light
 // (by default I_D I_L: the exact polygon integral times one fetch into the prefiltered texture,
 // paper sections 5.2-5.4; or the cells of the texel-constant texture, --textured-method);
 // specular and diffuse, Schlick's Fresnel through the table (Hill 2016).
@@ -14,23 +15,36 @@
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/textured_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <cstddef>
 #include <vector>
 
 namespace render {
 
-/// Radiance of one pixel from the polygonal lights (and their emitters): LTC (float, the
-/// renderer's path).
-inline vec3 shade_ltc(const scene& s, const pixel_hit& hit) {
+/// One polygonal light at a floor point by LTC with `lobes` lobes (--lobes): 1, the GGX table
+/// (ltc::shade_polygon_light), or 2, the two-lobe table (ltc::shade_polygon_light_two_lobe,
+/// taking the same arguments).
+inline ltc::polygon_light_result<float> shade_ltc_light(const light& l, const material& m, const pixel_hit& hit,
+                                                        int lobes) {
+    const auto shade_with = [&](const auto& shading_function) {
+        return shading_function(hit.p, vec3(0, 0, 1), hit.v, m.roughness, m.f0, m.albedo, l.radiance,
+                                l.vertices.data(), l.vertices.size(), ltc::sidedness::one_sided);
+    };
+    // The two are overload sets of templates: each wrapped in a lambda to be passed as a value.
+    return lobes == 2 ? shade_with([](const auto&... a) { return ltc::shade_polygon_light_two_lobe(a...); })
+                      : shade_with([](const auto&... a) { return ltc::shade_polygon_light(a...); });
+}
+
+/// Radiance of one pixel from the polygonal lights (and their emitters): LTC with `lobes` lobes
+/// (float, the renderer's path).
+inline vec3 shade_ltc(const scene& s, const pixel_hit& hit, int lobes = 1) {
     if (hit.kind == pixel_hit::emitter_front) return s.lights[static_cast<std::size_t>(hit.light)].radiance;
     if (hit.kind != pixel_hit::floor) return vec3(0.0f);
     const material& m = s.materials[static_cast<std::size_t>(hit.material)];
     vec3 sum(0.0f);
     for (const light& l : s.lights) {
-        const ltc::polygon_light_result<float> r =
-            ltc::shade_polygon_light(hit.p, vec3(0, 0, 1), hit.v, m.roughness, m.f0, m.albedo, l.radiance,
-                                     l.vertices.data(), l.vertices.size(), ltc::sidedness::one_sided);
+        const ltc::polygon_light_result<float> r = shade_ltc_light(l, m, hit, lobes);
         sum += r.specular + r.diffuse;
     }
     return sum;
