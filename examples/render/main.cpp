@@ -49,7 +49,7 @@
 //                    all          the three (below). float.
 //                  With --lobes 2 the polygonal lights by ltc::shade_polygon_light_two_lobe instead:
 //                  the opt-in two-lobe GGX table, the sum of two exactly integrated lobes (same
-//                  arguments, diffuse term and Fresnel; about twice the cost). The textured light
+//                  arguments, diffuse term and Fresnel; about 1.45x the cost). The textured light
 //                  and the --shapes lights stay as they are (one lobe). The images keep their
 //                  names (run it with another --out to keep the default run's): ltc.png and
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png

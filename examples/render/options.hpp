@@ -111,7 +111,7 @@ inline void print_help(const char* argv0) {
         "  --lobes L        the LTC table of the two polygonal lights in ltc.png: 1, the GGX table\n"
         "                   (ltc::shade_polygon_light; the default), or 2, the opt-in two-lobe GGX\n"
         "                   table (ltc::shade_polygon_light_two_lobe: the sum of two exactly integrated\n"
-        "                   lobes, about twice the cost). The textured light and the --shapes lights\n"
+        "                   lobes, about 1.45x the cost). The textured light and the --shapes lights\n"
         "                   stay as they are (one lobe). The images keep their names (give another\n"
         "                   --out to keep both runs'); the LTC time, error images and statistics are\n"
         "                   then those of the two-lobe render, and the batch timing is left out\n"

@@ -177,4 +177,22 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
     }
 }
 
+/// I_ltc alone: integrate_polygon_light(...).ltc, the same bits, for a second lobe whose form
+/// factor a first call already gave (ltc/shading/two_lobe_polygon_light.hpp). ltc_space skips the
+/// form factor's edge sum; the other strategies share one clip between the two integrals and
+/// compute both.
+template <typename Policy = edge_policy::automatic, typename T>
+LTC_HOST_DEVICE inline T integrate_polygon_light_ltc(const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv,
+                                                     const glm::vec<3, T>& P, const glm::vec<3, T>* vertices, std::size_t n,
+                                                     horizon_clipping clip = horizon_clipping::ltc_space) {
+    if (clip != horizon_clipping::ltc_space) return integrate_polygon_light<Policy>(frame, m_inv, P, vertices, n, clip).ltc;
+    using vec3 = glm::vec<3, T>;
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
+    if (!frame.valid || n < 3) return T(0);
+    const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertices[i]) - P)); };
+    const auto ltc_dirs = detail::make_directions([&](std::size_t i) { return m_inv * local_at(i); });
+    const T s = clamped_cosine<T, EdgePolicy>::signed_integral(ltc_dirs, n);
+    return glm::determinant(m_inv) < T(0) ? -s : s;
+}
+
 }  // namespace ltc

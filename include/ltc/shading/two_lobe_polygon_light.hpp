@@ -7,9 +7,10 @@
 //   ltc::polygon_light_result<float> r = ltc::shade_polygon_light_two_lobe(
 //       P, N, V, roughness, F0, albedo, radiance, vertices, n, ltc::sidedness::one_sided);
 //
-// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light; about
-// twice its cost (one more polygon transform, clip and edge sum): README, "Shading polygonal
-// lights with GGX", measured by benchmarks/bench_shading.cpp.
+// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light, at
+// the cost of one more LTC integral (integrate_polygon_light_ltc: the second lobe's transform,
+// clip and edge sum, without a second form factor): README, "Shading polygonal lights with GGX",
+// measured by benchmarks/bench_shading.cpp.
 #pragma once
 
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
@@ -30,8 +31,8 @@ inline polygon_light_result<T> shade_polygon_light_two_lobe(
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
     polygon_light_result<T> r = shade_polygon_light<Policy>(frame, lobes[0], P, F0, albedo, radiance, vertices, n, side, clip);
-    const polygon_light_integrals<T> second = integrate_polygon_light<Policy>(frame, lobes[1].m_inv, P, vertices, n, clip);
-    r.specular += radiance * brdf_scale(F0, lobes[1]) * apply_sidedness(second.ltc, side);
+    const T second = integrate_polygon_light_ltc<Policy>(frame, lobes[1].m_inv, P, vertices, n, clip);
+    r.specular += radiance * brdf_scale(F0, lobes[1]) * apply_sidedness(second, side);
     return r;
 }
 
