@@ -2,9 +2,9 @@
 // the reference shader's shading (reference_shading.hpp: frame, two bilinear fetches, two
 // 16-case-clipped integrals), ltc::shade_polygon_light point by point, and
 // ltc::batch::shade_polygon_light (one point per SIMD lane); and one point shaded by 4096 quad
-// lights (ltc::batch::shade_quad_lights); and ltc::shade_polygon_light_two_lobe point by point
-// (the opt-in two-lobe table: its cost against BM_library_scalar's, no error counters since it is
-// another approximation). Items/s plus, as counters, the maximum absolute and
+// lights (ltc::batch::shade_quad_lights); and ltc::shade_polygon_light_two_lobe point by point and
+// ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table: their costs against the
+// one-lobe ones, no error counters since it is another approximation). Items/s plus, as counters, the maximum absolute and
 // relative error of specular + diffuse (red) against ltc::shade_polygon_light in double with the
 // exact edge policy: the precision each float path loses, not the LTC approximation's own error.
 //
@@ -17,6 +17,7 @@
 
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
@@ -180,6 +181,20 @@ void BM_batch_shading(benchmark::State& state) {
     report_errors(state, out.red());
 }
 
+// The two-lobe batch (ltc/shading/batch_two_lobe.hpp): throughput only, as BM_library_scalar_two_lobe.
+void BM_batch_shading_two_lobe(benchmark::State& state) {
+    const scene& s = the_scene();
+    const auto points = s.points();
+    outputs out;
+    const auto results = out.results();
+    for (auto _ : state) {
+        ltc::batch::shade_polygon_light_two_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results, kItems);
+        benchmark::DoNotOptimize(out.c[0].data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+}
+
 // One point (the grid's centre) and 4096 copies of the light moved about: throughput only.
 void BM_batch_quad_lights(benchmark::State& state) {
     const scene& s = the_scene();
@@ -220,6 +235,7 @@ BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx512);
+BENCHMARK(BM_batch_shading_two_lobe);
 BENCHMARK(BM_batch_quad_lights);
 
 LTC_BENCHMARK_MAIN();

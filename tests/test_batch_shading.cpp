@@ -20,6 +20,7 @@
 #include "support/rounding_bound.hpp"
 
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/polygon_light.hpp>
 
 #include <catch2/catch.hpp>
@@ -124,7 +125,11 @@ std::size_t violations(const ltc::polygon_light_result<float>& got, const ltc::p
 
 }  // namespace
 
-TEST_CASE("batch shading of one light matches shade_polygon_light point by point", "[batch][shading]") {
+namespace {
+
+// One light over many points with `table` (the GGX table, or a lobe of the two-lobe table through
+// shade_polygon_light_with_table), against ltc::shade_polygon_light with the same table.
+void check_one_light_over_points(const ltc::ltc_table& table, bool ggx) {
     const std::size_t count = 1031;  // not a multiple of any width: the tail runs
     const points_soa pts(count, 12);
     ltc_test::rng g(13);
@@ -142,20 +147,27 @@ TEST_CASE("batch shading of one light matches shade_polygon_light point by point
                                                                   {radiance.x, radiance.y, radiance.z},
                                                                   side == ltc::sidedness::two_sided};
                 results_soa kernel(count), out(count);
-                const std::size_t vectorized = ltc_test::shading_kernel<Policy>(isa, sl, pts.view(), kernel.view(), count);
-                ltc::batch::shade_polygon_light<Policy>(pts.view(), radiance, light.data(), n, side, out.view(), count, isa);
+                const std::size_t vectorized =
+                    ltc_test::shading_kernel<Policy>(isa, sl, pts.view(), kernel.view(), count, table);
+                if (ggx)
+                    ltc::batch::shade_polygon_light<Policy>(pts.view(), radiance, light.data(), n, side, out.view(), count, isa);
+                else
+                    ltc::batch::shade_polygon_light_with_table<Policy>(table, pts.view(), radiance, light.data(), n, side,
+                                                                       out.view(), count, isa);
                 std::vector<float> stage_in[7];
                 for (int k = 0; k < 7; ++k) stage_in[k] = pts.a[3 + k];
                 ltc_test::lane_stage_results stages;
-                ltc_test::lane_stages(isa, stage_in, stages, count);
+                ltc_test::lane_stages(isa, stage_in, stages, count, table);
                 std::size_t bad = 0, handed_back = 0, crossing = 0;
                 for (std::size_t i = 0; i < count; ++i) {
                     const glm::vec3 P = pts.vec(0, i), F0 = pts.vec(10, i), albedo = pts.vec(13, i);
                     const auto got = out.at(i);
                     if (i >= vectorized || std::isnan(kernel.c[0][i])) {
                         handed_back += i < vectorized;
-                        const auto want = ltc::shade_polygon_light<Policy>(P, pts.vec(3, i), pts.vec(6, i), pts.a[9][i], F0,
-                                                                           albedo, radiance, light.data(), n, side);
+                        const auto scalar_frame = ltc::make_shading_frame(pts.vec(3, i), pts.vec(6, i));
+                        const auto want = ltc::shade_polygon_light<Policy>(
+                            scalar_frame, table.fetch(scalar_frame.cos_theta_v, pts.a[9][i]), P, F0, albedo, radiance,
+                            light.data(), n, side);
                         CHECK(got.specular == want.specular);
                         CHECK(got.diffuse == want.diffuse);
                         continue;
@@ -190,6 +202,50 @@ TEST_CASE("batch shading of one light matches shade_polygon_light point by point
                 CHECK(handed_back < count / 50);  // V = N exactly is the kernel's (Duff's tangent)
                 CHECK(crossing > count / 10);     // the horizon clipping is exercised
             }
+}
+
+}  // namespace
+
+TEST_CASE("batch shading of one light matches shade_polygon_light point by point", "[batch][shading]") {
+    check_one_light_over_points(ltc::ggx::table, true);
+}
+
+TEST_CASE("batch shading with each lobe table of the two-lobe GGX table", "[batch][shading][two_lobe]") {
+    for (int l = 0; l < 2; ++l) {
+        CAPTURE(l);
+        check_one_light_over_points(ltc::ggx_two_lobe::lobe_table(l), false);
+    }
+}
+
+TEST_CASE("two-lobe batch shading: lobe 1's pass plus lobe 2's specular term", "[batch][shading][two_lobe]") {
+    // ltc::batch::shade_polygon_light_two_lobe is the two passes above (each within its tolerance
+    // of the scalar shading with its lobe): the diffuse term and lobe 1's specular term from the
+    // first, lobe 2's specular term added; equal exactly, over more points than one chunk.
+    const std::size_t count = 700;
+    const points_soa pts(count, 5);
+    ltc_test::rng g(29);
+    const glm::vec3 radiance(1.0f, 2.0f, 0.5f);
+    for (const std::size_t n : {3u, 4u, 6u})
+        for (const auto isa : ltc::batch::instruction_sets) {
+            if (!ltc::batch::available(isa)) continue;
+            const auto light = ltc_test::random_polygon(g, n, true, false);
+            results_soa both(count), first(count), second(count);
+            ltc::batch::shade_polygon_light_two_lobe<Policy>(pts.view(), radiance, light.data(), n,
+                                                              ltc::sidedness::one_sided, both.view(), count, isa);
+            ltc::batch::shade_polygon_light_with_table<Policy>(ltc::ggx_two_lobe::lobe_table(0), pts.view(), radiance,
+                                                               light.data(), n, ltc::sidedness::one_sided, first.view(),
+                                                               count, isa);
+            ltc::batch::shade_polygon_light_with_table<Policy>(ltc::ggx_two_lobe::lobe_table(1), pts.view(), radiance,
+                                                               light.data(), n, ltc::sidedness::one_sided, second.view(),
+                                                               count, isa);
+            std::size_t bad = 0;
+            for (std::size_t i = 0; i < count; ++i) {
+                const auto b = both.at(i), f = first.at(i), s = second.at(i);
+                bad += !(b.specular == f.specular + s.specular) || !(b.diffuse == f.diffuse);
+            }
+            CAPTURE(static_cast<int>(isa), n);
+            CHECK(bad == 0);
+        }
 }
 
 TEST_CASE("batch shading: degenerate points and lights give the scalar function's values", "[batch][shading]") {

@@ -21,7 +21,7 @@ struct lane_stage_results {
 
 #define LTC_TEST_LANE_STAGES(ns, attributes)                                                                       \
     attributes inline void lane_stages_##ns(const std::vector<float> (&in)[7], lane_stage_results& out,           \
-                                            std::size_t count) {                                                   \
+                                            std::size_t count, const ltc::ltc_table& table) {                      \
         using namespace ltc::batch::detail::ns;                                                                    \
         constexpr std::size_t W = types<float>::width;                                                             \
         for (auto& v : out.frame) v.assign(count, 0.0f);                                                           \
@@ -30,7 +30,7 @@ struct lane_stage_results {
         for (std::size_t i = 0; i + W <= count; i += W) {                                                          \
             const lane_frame<float> f({load(&in[0][i]), load(&in[1][i]), load(&in[2][i])},                        \
                                       {load(&in[3][i]), load(&in[4][i]), load(&in[5][i])});                       \
-            const lane_coefficients<float> c(ltc::ggx::table, f.cos_theta_v, load(&in[6][i]));                    \
+            const lane_coefficients<float> c(table, f.cos_theta_v, load(&in[6][i]));                               \
             for (int k = 0; k < 3; ++k) {                                                                          \
                 __builtin_memcpy(&out.frame[k][i], &f.t1[k], sizeof f.t1[k]);                                      \
                 __builtin_memcpy(&out.frame[3 + k][i], &f.t2[k], sizeof f.t2[k]);                                  \
@@ -52,39 +52,41 @@ LTC_TEST_LANE_STAGES(avx512, LTC_SIMD_AVX512_TARGET)
 #endif
 #endif
 
-/// The lane stages of `which` (baseline, avx2 or avx512; the caller checks ltc::batch::available).
+/// The lane stages of `which` (baseline, avx2 or avx512; the caller checks ltc::batch::available),
+/// the coefficients from `table` (the GGX table by default).
 inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7], lane_stage_results& out,
-                        std::size_t count) {
+                        std::size_t count, const ltc::ltc_table& table = ltc::ggx::table) {
 #if LTC_SIMD_AVX512
-    if (which == ltc::batch::isa::avx512) return lane_stages_avx512(in, out, count);
+    if (which == ltc::batch::isa::avx512) return lane_stages_avx512(in, out, count, table);
 #endif
 #if LTC_SIMD_AVX2
-    if (which == ltc::batch::isa::avx2) return lane_stages_avx2(in, out, count);
+    if (which == ltc::batch::isa::avx2) return lane_stages_avx2(in, out, count, table);
 #endif
 #if LTC_SIMD
-    lane_stages_baseline(in, out, count);
+    lane_stages_baseline(in, out, count, table);
 #endif
-    (void)which, (void)in, (void)out, (void)count;
+    (void)which, (void)in, (void)out, (void)count, (void)table;
 }
 
 /// The shading kernel of `which` alone: points [0, returned) written, NaN in specular red where
-/// it hands a point back to the scalar function.
+/// it hands a point back to the scalar function; the coefficients from `table`.
 template <typename Policy>
 std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
                            const ltc::batch::shading_points<float>& points,
-                           const ltc::batch::shading_results<float>& out, std::size_t count) {
+                           const ltc::batch::shading_results<float>& out, std::size_t count,
+                           const ltc::ltc_table& table = ltc::ggx::table) {
 #if LTC_SIMD_AVX512
     if (which == ltc::batch::isa::avx512)
-        return ltc::batch::detail::run_shade_avx512<Policy>(ltc::ggx::table, light, points, out, count);
+        return ltc::batch::detail::run_shade_avx512<Policy>(table, light, points, out, count);
 #endif
 #if LTC_SIMD_AVX2
     if (which == ltc::batch::isa::avx2)
-        return ltc::batch::detail::run_shade_avx2<Policy>(ltc::ggx::table, light, points, out, count);
+        return ltc::batch::detail::run_shade_avx2<Policy>(table, light, points, out, count);
 #endif
 #if LTC_SIMD
-    return ltc::batch::detail::run_shade_baseline<Policy>(ltc::ggx::table, light, points, out, count);
+    return ltc::batch::detail::run_shade_baseline<Policy>(table, light, points, out, count);
 #else
-    (void)which, (void)light, (void)points, (void)out, (void)count;
+    (void)which, (void)light, (void)points, (void)out, (void)count, (void)table;
     return 0;
 #endif
 }

@@ -53,12 +53,14 @@ inline void write(const shading_results<T>& out, std::size_t i, const polygon_li
 
 }  // namespace detail
 
-/// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
-/// and the given radiance, like ltc::shade_polygon_light item by item.
+/// shade_polygon_light with any LTC table (ltc/shading/table.hpp) in place of the GGX table:
+/// item i gets ltc::shade_polygon_light(frame, table.fetch(frame.cos_theta_v, roughness), ...)
+/// up to rounding (the same kernel; ltc/shading/batch_two_lobe.hpp runs it once per lobe).
 template <typename Policy = edge_policy::automatic, typename T>
-void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& radiance,
-                         const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
-                         std::size_t count, isa which = isa::automatic) {
+void shade_polygon_light_with_table(const ltc_table& table, const shading_points<T>& points,
+                                    const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
+                                    sidedness side, const shading_results<T>& out, std::size_t count,
+                                    isa which = isa::automatic) {
     using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     // The light's vertices by axis: on the stack for up to 16 vertices.
     constexpr std::size_t stack = 16;
@@ -75,14 +77,14 @@ void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& 
 #if LTC_SIMD
         if (n >= 3) switch (resolve(which)) {
                 case isa::baseline:
-                    vectorized = detail::run_shade_baseline<EdgePolicy>(ggx::table, light, points, out, count);
+                    vectorized = detail::run_shade_baseline<EdgePolicy>(table, light, points, out, count);
                     break;
 #if LTC_SIMD_AVX2
-                case isa::avx2: vectorized = detail::run_shade_avx2<EdgePolicy>(ggx::table, light, points, out, count); break;
+                case isa::avx2: vectorized = detail::run_shade_avx2<EdgePolicy>(table, light, points, out, count); break;
 #endif
 #if LTC_SIMD_AVX512
                 case isa::avx512:
-                    vectorized = detail::run_shade_avx512<EdgePolicy>(ggx::table, light, points, out, count);
+                    vectorized = detail::run_shade_avx512<EdgePolicy>(table, light, points, out, count);
                     break;
 #endif
                 default: break;
@@ -94,10 +96,22 @@ void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& 
         if (i < vectorized && !std::isnan(out.specular[0][i])) continue;
         const glm::vec<3, T> P(points.px[i], points.py[i], points.pz[i]), N(points.nx[i], points.ny[i], points.nz[i]);
         const glm::vec<3, T> V(points.vx[i], points.vy[i], points.vz[i]);
+        // What the roughness overload of ltc::shade_polygon_light does, with `table`.
+        const shading_frame<T> frame = make_shading_frame(N, V);
         detail::write(out, i,
-                      ltc::shade_polygon_light<Policy>(P, N, V, points.roughness[i], detail::item(points.f0, i),
-                                                       detail::item(points.albedo, i), radiance, vertices, n, side));
+                      ltc::shade_polygon_light<Policy>(frame, table.fetch(frame.cos_theta_v, points.roughness[i]), P,
+                                                       detail::item(points.f0, i), detail::item(points.albedo, i),
+                                                       radiance, vertices, n, side));
     }
+}
+
+/// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
+/// and the given radiance, like ltc::shade_polygon_light item by item.
+template <typename Policy = edge_policy::automatic, typename T>
+void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& radiance,
+                         const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
+                         std::size_t count, isa which = isa::automatic) {
+    shade_polygon_light_with_table<Policy>(ggx::table, points, radiance, vertices, n, side, out, count, which);
 }
 
 /// count quad lights: vertex k of light i is (x[k][i], y[k][i], z[k][i]) in world space, its
