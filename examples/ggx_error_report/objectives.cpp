@@ -88,7 +88,8 @@ evaluation oracle(const std::vector<config>& grid, const evaluation& ev) {
 /// Per (theta_v, roughness) cell of the grid, fits at the cell's exact view and roughness (no
 /// table, no interpolation): the one-lobe L3 fit (marched from normal incidence as fit_table does)
 /// and the two-lobe fit started from it. lobes = 1 or 2.
-evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int lobes, double& seconds) {
+evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int lobes, double& seconds,
+                     bool refit_first = true) {
     evaluation e = ev;
     const auto t0 = std::chrono::steady_clock::now();
     ltc::fit::options fo;
@@ -110,7 +111,7 @@ evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int 
             lobe[0].magnitude = node.magnitude;
             lobe[1].magnitude = 0;
             if (lobes == 2) {
-                const auto two = ltc::fit::fit_two_lobes<ltc::brdf::ggx>(c, alpha, ltc::fit::start_from_one_lobe(node.parameters), fo);
+                const auto two = ltc::fit::fit_two_lobes<ltc::brdf::ggx>(c, alpha, ltc::fit::start_from_one_lobe(node.parameters), fo, refit_first);
                 for (int l = 0; l < 2; ++l) lobe[std::size_t(l)].m_inv = two.m_inv[std::size_t(l)];
                 lobe[0].magnitude = two.magnitude * (1 - two.share);
                 lobe[1].magnitude = two.magnitude * two.share;
@@ -169,6 +170,9 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
             const evaluation e2 = cell_fits(grid, ev, 2, secs);
             std::snprintf(time, sizeof time, "%.2fs", secs);
             print_row("cells, two lobes", time, grid, e2);
+            const evaluation e3 = cell_fits(grid, ev, 2, secs, false);
+            std::snprintf(time, sizeof time, "%.2fs", secs);
+            print_row("cells, lobe 1 L3", time, grid, e3);
             continue;
         }
         if (name == "two-lobe-fit") {  // the shipped two-lobe table's fit, timed here
