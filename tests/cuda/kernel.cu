@@ -31,3 +31,13 @@ __global__ void sample_quads(const glm::vec3* quads, const glm::mat3* m_inv, glm
     const float inverses = cosine.invert(a.direction).x + lobe.invert(b.direction).y + solid.invert(y).x + tri.invert(z).y;
     out[i] = glm::vec4(a.direction + b.direction + x + y + z, pdfs + inverses);
 }
+
+// The two-lobe shading's second integral (issue 16): I_ltc alone, in world space, for each lobe
+// (coefficients from the two-lobe table on the host: the tables are host data).
+__global__ void two_lobe_integrals(const glm::vec3* quads, const glm::mat3* m_inv, float* out, int count) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= count) return;
+    const auto frame = ltc::make_shading_frame(glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.6f, 0.0f, 0.8f));
+    out[i] = ltc::integrate_polygon_light_ltc(frame, m_inv[2 * i], glm::vec3(0.0f), quads + 4 * i, 4) +
+             ltc::integrate_polygon_light_ltc(frame, m_inv[2 * i + 1], glm::vec3(0.0f), quads + 4 * i, 4);
+}
