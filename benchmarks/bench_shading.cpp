@@ -196,6 +196,8 @@ void BM_batch_shading_two_lobe(benchmark::State& state) {
 }
 
 // One point (the grid's centre) and 4096 copies of the light moved about: throughput only.
+// Lobes = 2: ltc::batch::shade_quad_lights_two_lobe.
+template <int Lobes>
 void BM_batch_quad_lights(benchmark::State& state) {
     const scene& s = the_scene();
     const std::size_t i = 32 * 64 + 32;
@@ -215,8 +217,12 @@ void BM_batch_quad_lights(benchmark::State& state) {
     outputs out;
     const auto results = out.results();
     for (auto _ : state) {
-        ltc::batch::shade_quad_lights(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i), lights,
-                                      ltc::sidedness::two_sided, results, kItems);
+        if (Lobes == 1)
+            ltc::batch::shade_quad_lights(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i), lights,
+                                          ltc::sidedness::two_sided, results, kItems);
+        else
+            ltc::batch::shade_quad_lights_two_lobe(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i),
+                                                   s.vec(13, i), lights, ltc::sidedness::two_sided, results, kItems);
         benchmark::DoNotOptimize(out.c[0].data());
         benchmark::ClobberMemory();
     }
@@ -236,6 +242,7 @@ BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx512);
 BENCHMARK(BM_batch_shading_two_lobe);
-BENCHMARK(BM_batch_quad_lights);
+BENCHMARK_TEMPLATE(BM_batch_quad_lights, 1);
+BENCHMARK_TEMPLATE(BM_batch_quad_lights, 2);
 
 LTC_BENCHMARK_MAIN();

@@ -285,7 +285,13 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
     }
 }
 
-TEST_CASE("batch shading of many quad lights matches shade_polygon_light light by light", "[batch][shading]") {
+namespace {
+
+// Many quad lights over one point, with the GGX table (lobes = 1: shade_quad_lights) or the
+// two-lobe table (lobes = 2: shade_quad_lights_two_lobe), against the scalar shading light by
+// light. With two lobes the frame and the fetch are the scalar ones, so the specular tolerance
+// is the sum of the two lobes' (each lobe's I_ltc within its own), the diffuse one lobe 1's.
+void check_quad_lights(int lobes) {
     const std::size_t count = 517;
     ltc_test::rng g(21);
     std::vector<float> v[15];
@@ -307,25 +313,48 @@ TEST_CASE("batch shading of many quad lights matches shade_polygon_light light b
             for (const auto isa : ltc::batch::instruction_sets) {
                 if (!ltc::batch::available(isa)) continue;
                 results_soa out(count);
-                ltc::batch::shade_quad_lights<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(), count, isa);
+                if (lobes == 1)
+                    ltc::batch::shade_quad_lights<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(), count, isa);
+                else
+                    ltc::batch::shade_quad_lights_two_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(),
+                                                                   count, isa);
                 const ltc::shading_frame<float> frame = ltc::make_shading_frame(N, V);
                 const auto lobe = ltc::ggx::fetch(frame.cos_theta_v, roughness);
+                const auto two = ltc::ggx_two_lobe::fetch(frame.cos_theta_v, roughness);
                 std::size_t bad = 0;
                 for (std::size_t j = 0; j < count; ++j) {
                     const glm::vec3 radiance(v[12][j], v[13][j], v[14][j]);
-                    const auto want = ltc::shade_polygon_light<Policy>(P, N, V, roughness, F0, albedo, radiance,
-                                                                       quads[j].data(), 4, side);
-                    const auto tol = tolerance(frame, lobe, P, F0, albedo, radiance, quads[j], want);
+                    const auto want =
+                        lobes == 1 ? ltc::shade_polygon_light<Policy>(P, N, V, roughness, F0, albedo, radiance, quads[j].data(),
+                                                                      4, side)
+                                   : ltc::shade_polygon_light_two_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance,
+                                                                               quads[j].data(), 4, side);
+                    auto tol = tolerance(frame, lobes == 1 ? lobe : two[0], P, F0, albedo, radiance, quads[j], want);
+                    if (lobes == 2) tol.specular += tolerance(frame, two[1], P, F0, albedo, radiance, quads[j], want).specular;
                     bad += violations(out.at(j), want, tol);
                 }
                 CAPTURE(static_cast<int>(isa), roughness, side == ltc::sidedness::two_sided);
                 CHECK(bad == 0);
                 // N = 0: nothing to shade, zeros as from shade_polygon_light.
                 results_soa none(count);
-                ltc::batch::shade_quad_lights<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
-                                                      none.view(), count, isa);
+                if (lobes == 1)
+                    ltc::batch::shade_quad_lights<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
+                                                          none.view(), count, isa);
+                else
+                    ltc::batch::shade_quad_lights_two_lobe<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
+                                                                   none.view(), count, isa);
                 for (std::size_t j = 0; j < count; ++j) bad += none.at(j).specular != glm::vec3(0.0f) ||
                                                                none.at(j).diffuse != glm::vec3(0.0f);
                 CHECK(bad == 0);
             }
+}
+
+}  // namespace
+
+TEST_CASE("batch shading of many quad lights matches shade_polygon_light light by light", "[batch][shading]") {
+    check_quad_lights(1);
+}
+
+TEST_CASE("two-lobe batch shading of many quad lights matches shade_polygon_light_two_lobe", "[batch][shading][two_lobe]") {
+    check_quad_lights(2);
 }

@@ -124,24 +124,26 @@ struct quad_lights {
     const T* radiance[3] = {};
 };
 
-/// Shades one point (as ltc::shade_polygon_light takes it) with each of count quad lights: out
-/// receives light i's specular and diffuse at item i (sum them for the point's radiance).
-template <typename Policy = edge_policy::automatic, typename T>
-void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
-                       const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,
-                       sidedness side, const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {
+namespace detail {
+
+/// shade_quad_lights with `count_lobes` (1 or 2) lobes' coefficients, each with its share in its
+/// magnitude and Fresnel term (ltc/shading/ggx_two_lobe_fetch.hpp): one more I_ltc per lobe.
+template <typename Policy, typename T>
+void shade_quad_lights_lobes(const glm::vec<3, T>& P, const shading_frame<T>& frame, const ltc_coefficients<T>* lobes,
+                             int count_lobes, const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo,
+                             const quad_lights<T>& lights, sidedness side, const shading_results<T>& out,
+                             std::size_t count, isa which) {
     using vec3 = glm::vec<3, T>;
-    const shading_frame<T> frame = make_shading_frame(N, V);
-    const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
-    const vec3 brdf = F0 * lobe.magnitude + (vec3(T(1)) - F0) * lobe.fresnel;
     if (!frame.valid) {  // N = 0: nothing to shade, as in ltc::shade_polygon_light
-        for (std::size_t i = 0; i < count; ++i) detail::write(out, i, polygon_light_result<T>{});
+        for (std::size_t i = 0; i < count; ++i) write(out, i, polygon_light_result<T>{});
         return;
     }
+    vec3 brdf[2];
+    for (int l = 0; l < count_lobes; ++l) brdf[l] = F0 * lobes[l].magnitude + (vec3(T(1)) - F0) * lobes[l].fresnel;
     // The lights in the local frame (frame.to_local(p - P)) block by block, then E (M = I) and
-    // I_ltc (M = the lobe's M^-1) through the quad kernel.
+    // each lobe's I_ltc (M = its M^-1) through the quad kernel.
     constexpr std::size_t block = 256;
-    T x[4][block], y[4][block], z[4][block], E[block], I[block];
+    T x[4][block], y[4][block], z[4][block], E[block], I[2][block];
     for (std::size_t base = 0; base < count; base += block) {
         const std::size_t b = count - base < block ? count - base : block;
         quad_soa<T> soa;
@@ -154,16 +156,32 @@ void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const g
         }
         soa.m_inv = matrices<T>::same_for_all(glm::mat<3, 3, T>(T(1)));
         integrate_quads<Policy>(soa, E, b, side, which);
-        soa.m_inv = matrices<T>::same_for_all(lobe.m_inv);
-        integrate_quads<Policy>(soa, I, b, side, which);
+        for (int l = 0; l < count_lobes; ++l) {
+            soa.m_inv = matrices<T>::same_for_all(lobes[l].m_inv);
+            integrate_quads<Policy>(soa, I[l], b, side, which);
+        }
         for (std::size_t j = 0; j < b; ++j) {
-            const vec3 radiance = detail::item(lights.radiance, base + j);
+            const vec3 radiance = item(lights.radiance, base + j);
             polygon_light_result<T> r;
-            r.specular = radiance * brdf * I[j];
+            r.specular = radiance * brdf[0] * I[0][j];
+            if (count_lobes > 1) r.specular += radiance * brdf[1] * I[1][j];
             r.diffuse = albedo * radiance * E[j];
-            detail::write(out, base + j, r);
+            write(out, base + j, r);
         }
     }
+}
+
+}  // namespace detail
+
+/// Shades one point (as ltc::shade_polygon_light takes it) with each of count quad lights: out
+/// receives light i's specular and diffuse at item i (sum them for the point's radiance).
+template <typename Policy = edge_policy::automatic, typename T>
+void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
+                       const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,
+                       sidedness side, const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {
+    const shading_frame<T> frame = make_shading_frame(N, V);
+    const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
+    detail::shade_quad_lights_lobes<Policy>(P, frame, &lobe, 1, F0, albedo, lights, side, out, count, which);
 }
 
 }  // namespace batch

@@ -2,6 +2,7 @@
 // two_lobe_polygon_light.hpp) in batches: one polygonal light over many shading points.
 //
 //   ltc::batch::shade_polygon_light_two_lobe(pts, radiance, vertices, n, ltc::sidedness::one_sided, res, count);
+//   ltc::batch::shade_quad_lights_two_lobe(P, N, V, roughness, F0, albedo, lights, ltc::sidedness::one_sided, res, count);
 //
 // Item i gets what ltc::shade_polygon_light_two_lobe gives for it with horizon_clipping::ltc_space,
 // up to rounding: the SIMD kernel of ltc/shading/batch_shading.hpp runs once per lobe table
@@ -10,7 +11,8 @@
 // computes a form factor that it drops, so this costs about twice the one-lobe batch
 // (benchmarks/bench_shading.cpp); its points go through in chunks of 256 with their results on
 // the stack. The tolerance of each pass against the scalar shading with the same table is the
-// one-lobe batch's (tests/test_batch_shading.cpp).
+// one-lobe batch's (tests/test_batch_shading.cpp). shade_quad_lights_two_lobe: one point and many
+// quad lights, as batch::shade_quad_lights, with one more LTC integral per light for lobe 2.
 #pragma once
 
 #include <ltc/shading/batch_shading.hpp>
@@ -48,6 +50,20 @@ void shade_polygon_light_two_lobe(const shading_points<T>& points, const glm::ve
         for (int c = 0; c < 3; ++c)
             for (std::size_t i = 0; i < m; ++i) out.specular[c][begin + i] += scratch[c][i];
     }
+}
+
+/// shade_quad_lights with the two-lobe GGX table: one point, count quad lights, light i's
+/// specular (both lobes) and diffuse at item i, like ltc::shade_polygon_light_two_lobe light by
+/// light. The frame, the fetch and the lights' local coordinates once; one more quad-kernel
+/// integral per light than the one-lobe call.
+template <typename Policy = edge_policy::automatic, typename T>
+void shade_quad_lights_two_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
+                                const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,
+                                sidedness side, const shading_results<T>& out, std::size_t count,
+                                isa which = isa::automatic) {
+    const shading_frame<T> frame = make_shading_frame(N, V);
+    const auto lobes = ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness);
+    detail::shade_quad_lights_lobes<Policy>(P, frame, lobes.data(), 2, F0, albedo, lights, side, out, count, which);
 }
 
 }  // namespace batch
