@@ -16,8 +16,14 @@ namespace ggx_error_report {
 using glm::dvec3;
 constexpr double deg = 3.141592653589793 / 180.0;
 
-const double thetas[] = {0, 30, 60, 80};
-const double roughnesses[] = {0.1, 0.25, 0.5, 0.75, 1.0};
+// The documented grid (--grid on, the default) and one off it (--grid off): view angles and
+// roughnesses between the first's and between the tables' nodes (the 32 x 32 two-lobe table's
+// nodes sit at u = sqrt(1 - cos theta_v) = t / 31 and roughness a / 31: these fall mid-cell), so
+// that a table is also measured where it interpolates. Index 3 is the grazing view of each.
+inline constexpr double grid_thetas[2][4] = {{0, 30, 60, 80}, {15, 45, 65, 75}};
+inline constexpr double grid_roughnesses[2][5] = {{0.1, 0.25, 0.5, 0.75, 1.0}, {0.15, 0.2, 0.35, 0.6, 0.9}};
+inline const double* thetas = grid_thetas[0];            // set once by main (--grid)
+inline const double* roughnesses = grid_roughnesses[0];
 const char* const shape_names[] = {"rectangle", "triangle", "pentagon"};
 const double sizes[] = {0.1, 0.5, 2.0};
 const char* const placement_names[] = {"mirror", "zenith", "side", "low"};

@@ -102,7 +102,7 @@ evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int 
             const double x = std::sqrt(1 - c);
             const int steps = std::max(1, int(std::ceil(x * 48)));
             ltc::fit::node_result node = ltc::fit::fit_node<ltc::brdf::ggx>(1.0, alpha, start, fo);
-            for (int k = 1; k <= steps && t > 0; ++k) {
+            for (int k = 1; k <= steps && x > 0; ++k) {  // from normal incidence to theta_v
                 const double xk = x * k / steps;
                 node = ltc::fit::fit_node<ltc::brdf::ggx>(std::max(1 - xk * xk, fo.cos_theta_min), alpha, node.parameters, fo);
             }
@@ -150,11 +150,13 @@ evaluation evaluate_two_lobes(const std::vector<config>& grid, const evaluation&
 void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev, int size,
                           const std::vector<std::string>& objectives, unsigned threads) {
     std::printf("\n8. Fit objective (ltc::fit::options::goal; %dx%d tables fitted here on %u threads, exact\n"
-                "   clipping): mean / p95 / max relative error over the significant configurations, theta_v = 80\n"
-                "   mean, and mean by roughness 0.1 / 0.25 / 0.5 / 0.75 / 1. The oracle is no table: per (theta_v,\n"
+                "   clipping): mean / p95 / max relative error over the significant configurations, theta_v = %g\n"
+                "   mean, and mean by roughness %g / %g / %g / %g / %g. The oracle is no table: per (theta_v,\n"
                 "   roughness), the one-lobe LTC fitted to this grid's own ground truth (a bound, not a method)\n",
-                size, size, threads);
-    std::printf("  %-16s %9s | %7s %7s %8s | %7s | %s\n", "objective", "fit time", "mean", "p95", "max", "80 deg",
+                size, size, threads, thetas[3], roughnesses[0], roughnesses[1], roughnesses[2], roughnesses[3], roughnesses[4]);
+    char grazing[32];
+    std::snprintf(grazing, sizeof grazing, "%g deg", thetas[3]);
+    std::printf("  %-16s %9s | %7s %7s %8s | %7s | %s\n", "objective", "fit time", "mean", "p95", "max", grazing,
                 "by roughness: mean");
     print_row("shipped (L3)", "-", grid, ev);
     print_row("oracle (bound)", "-", grid, oracle(grid, ev));
