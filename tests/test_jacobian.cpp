@@ -77,6 +77,28 @@ TEMPLATE_TEST_CASE("normalization: eval(w) == jacobian(w) * D_o(normalize(M^-1 w
     }
 }
 
+// transformed<Other>(d): the same M over another original distribution (ltc_polygon_sampler holds
+// its lobe's Jacobian this way, whatever the lobe's edge policy): M^-1, |M^-1| and so the Jacobian
+// are copied, not recomputed, so they agree bit for bit, and D_other = J D_other,o as above.
+TEMPLATE_TEST_CASE("transformed<Other>(d) keeps M^-1, |M^-1| and the Jacobian bit for bit", "[jacobian]", float, double) {
+    using T = TestType;
+    using vec3 = glm::vec<3, T>;
+    for (const named_matrix& nm : ltc_test::test_matrices()) {
+        const ltc::transformed<ltc::clamped_cosine<T, ltc::edge_policy::minimax_rational>> d(in_precision<T>(nm.m));
+        const ltc::transformed<ltc::uniform_sphere<T>> u(d);
+        INFO(nm.name);
+        CHECK(u.inverse_matrix() == d.inverse_matrix());
+        CHECK(u.inverse_determinant() == d.inverse_determinant());
+        ltc_test::rng rng(0x5eed0005);
+        int differ = 0;
+        for (int i = 0; i < 1000; ++i) {
+            const vec3 w(rng.direction());
+            differ += u.jacobian(w) != d.jacobian(w);
+        }
+        CHECK(differ == 0);
+    }
+}
+
 // The Jacobian of the bijection w -> M^-1 w / |M^-1 w| of the sphere integrates to the area of
 // the sphere, 4 pi. Transformed-space quadrature with the uniform-sphere rule of (a) (J / 4 pi
 // is D for D_o uniform on the sphere; here through jacobian(), for every D_o). Rounding of J:

@@ -41,10 +41,10 @@ class ltc_polygon_sampler {
     template <typename Policy>
     LTC_HOST_DEVICE ltc_polygon_sampler(const transformed<clamped_cosine<T, Policy>>& d, const vec3* vertices,
                                         std::size_t n)
-        : m_inv_(d.inverse_matrix()), m_(d.matrix()), abs_det_inv_(std::abs(d.inverse_determinant())) {
+        : lobe_(d), m_(d.matrix()) {
         if (n > MaxVertices) return;
         vec3 local[MaxVertices];
-        const detail::transformed_vertices<T> to_cosine{m_inv_, vertices};
+        const detail::transformed_vertices<T> to_cosine{lobe_.inverse_matrix(), vertices};
         for (std::size_t i = 0; i < n; ++i) local[i] = to_cosine(i);
         cosine_ = projected_polygon_sampler<T, MaxVertices>(local, n);
         // A numerically degenerate M can map even the polygon's interior outside it and back:
@@ -96,24 +96,20 @@ class ltc_polygon_sampler {
     LTC_HOST_DEVICE T pdf(const vec3& w) const { return usable_ ? density(w) : T(0); }
 
     /// u with sample(u).direction == w (up to rounding), for w in the polygon.
-    LTC_HOST_DEVICE vec2 invert(const vec3& w) const { return cosine_.invert(detail::safe_normalize(m_inv_ * w)); }
+    LTC_HOST_DEVICE vec2 invert(const vec3& w) const {
+        return cosine_.invert(detail::safe_normalize(lobe_.inverse_matrix() * w));
+    }
 
   private:
     LTC_HOST_DEVICE T density(const vec3& w) const {
         // A Jacobian past T's range (M near singular, w near its null direction): saturated, and
         // never multiplied into a zero density (0 x Inf).
-        const T p = cosine_.pdf(detail::safe_normalize(m_inv_ * w));
-        return p > T(0) ? glm::min(p * jacobian(w), detail::largest_finite<T>()) : T(0);
+        const T p = cosine_.pdf(detail::safe_normalize(lobe_.inverse_matrix() * w));
+        return p > T(0) ? glm::min(p * lobe_.jacobian(w), detail::largest_finite<T>()) : T(0);
     }
 
-    // |M^-1| / |M^-1 w|^3 (transformed<>::jacobian).
-    LTC_HOST_DEVICE T jacobian(const vec3& w) const {
-        const T l = glm::length(m_inv_ * w);
-        return l > T(0) ? abs_det_inv_ / (l * l * l) : T(0);
-    }
-
-    mat3 m_inv_{T(1)}, m_{T(1)};
-    T abs_det_inv_{1};
+    transformed<clamped_cosine<T>> lobe_{mat3(T(1))};  // D's M^-1 and |M^-1|: the Jacobian of eq. 1
+    mat3 m_{T(1)};
     vec3 inside_{T(0), T(0), T(1)};  // M (the clipped M^-1 P's interior direction)
     bool usable_ = false;
     projected_polygon_sampler<T, MaxVertices> cosine_;

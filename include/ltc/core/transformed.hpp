@@ -20,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace ltc {
 
@@ -129,6 +130,14 @@ class transformed {
     LTC_HOST_DEVICE static transformed from_inverse(const mat3& m_inv) {
         const T det = glm::dot(m_inv[0], glm::cross(m_inv[1], m_inv[2]));
         return transformed(m_inv, std::isfinite(det) ? det : detail::overflowed_determinant(m_inv));
+    }
+
+    /// The same M (the same M^-1 and determinant, bit for bit) over another original
+    /// distribution of the same scalar type: e.g. the Jacobian of an LTC whose edge policy differs.
+    template <typename OtherDist>
+    LTC_HOST_DEVICE explicit transformed(const transformed<OtherDist>& other) {
+        static_assert(std::is_same<typename OtherDist::scalar, T>::value, "ltc::transformed: the same scalar type");
+        set(other.inverse_matrix(), other.inverse_determinant());
     }
 
     /// Like the constructor, but throws ltc::invalid_transform when M has a non-finite entry or

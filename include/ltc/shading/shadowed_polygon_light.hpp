@@ -184,19 +184,25 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         projected_polygon_sampler<T, max_vertices> cosine_sampler;
         if (ks > 0 && !reject) lobe_sampler = ltc_polygon_sampler<T, max_vertices>(d, local, n);
         if (kd > 0 && cosine) cosine_sampler = projected_polygon_sampler<T, max_vertices>(local, n);
-        // The plan's density at l (world w, the light's plane at distance t along it).
-        const auto density = [&](const vec3& l, const vec3& w, T t) {
-            T p = ks > 0 ? T(draws) * d.eval(l) / (reject ? T(1) : i_d) : T(0);
+        // The specular technique's density per draw at l: D(l) by rejection, else D(l) / I_D.
+        const auto lobe_density = [&](const vec3& l) { return ks > 0 ? d.eval(l) / (reject ? T(1) : i_d) : T(0); };
+        // The plan's density at l (world w, the light's plane at distance t along it), given lobe_density(l).
+        const auto density = [&](const vec3& l, const vec3& w, T t, T lobe) {
+            T p = T(draws) * lobe;
             if (kd > 0) p += T(kd) * (cosine ? glm::max(l.z, T(0)) / e : plane.solid_angle_pdf(P, P + w * t));
             return p;
         };
-        const auto add_local = [&](const vec3& l) {
+        const auto add_local = [&](const vec3& l, T lobe) {
             const vec3 w = to_world(l);
             const T t = plane_distance(w);
-            add(l, w, t, density(l, w, t));
+            add(l, w, t, density(l, w, t, lobe));
         };
-        for (std::size_t k = 0; k < ks && !reject && !lobe_sampler.empty(); ++k)
-            add_local(lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation)).direction);
+        // The exact sampler's own pdf, D / I_D, is lobe_density (I_D by its own closed form, equal
+        // to i_d up to rounding): no second evaluation of D.
+        for (std::size_t k = 0; k < ks && !reject && !lobe_sampler.empty(); ++k) {
+            const polygon_sample<T> x = lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation));
+            add_local(x.direction, x.pdf);
+        }
         if (reject) {
             // The light's great circles, pointing inwards (a convex polygon seen from P).
             vec3 edge[max_vertices];
@@ -206,16 +212,19 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
                 const vec3 l = d.sample(detail::lattice_point(k, draws, options.rotation));
                 bool hit = true;
                 for (std::size_t i = 0; i < n && hit; ++i) hit = glm::dot(l, edge[i]) >= T(0);
-                if (hit) add_local(l);
+                if (hit) add_local(l, lobe_density(l));
             }
         }
         for (std::size_t k = 0; k < kd && cosine && !cosine_sampler.empty(); ++k)
-            add_local(cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation)).direction);
+        {
+            const vec3 l = cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation)).direction;
+            add_local(l, lobe_density(l));
+        }
         for (std::size_t k = 0; k < kd && !cosine && !plane.empty(); ++k) {
             const vec3 x = plane.sample(detail::lattice_point(k, kd, options.rotation));
             const vec3 w = detail::safe_normalize(x - P);
             const vec3 l = frame.to_local(w);
-            add(l, w, glm::length(x - P), density(l, w, glm::length(x - P)));
+            add(l, w, glm::length(x - P), density(l, w, glm::length(x - P), lobe_density(l)));
         }
     } else {
         for (std::size_t k = 0; k < K && !plane.empty(); ++k) {
