@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -40,10 +41,29 @@ TEST_CASE("two-lobe table: finite entries, invertible lobes, shares adding up to
                 const double det = glm::determinant(m);
                 CHECK(std::isfinite(det));
                 CHECK(det != 0);
+                // The fit's structure (ltc_parameters): a positive diagonal, as in the one-lobe table.
+                CHECK(m[0][0] > 0);
+                CHECK(m[2][2] > 0);
                 CHECK(t.node(u, a, ltc::channel::magnitude) >= 0);
                 CHECK(t.node(u, a, ltc::channel::fresnel) >= 0);
             }
     }
+    // A dropped lobe (share 0: fit_two_lobes) is a copy of the other, not a spike that the
+    // table's interpolation would carry into the neighbouring cells.
+    const ltc::ltc_table t0 = ltc::ggx_two_lobe::lobe_table(0), t1 = ltc::ggx_two_lobe::lobe_table(1);
+    int dropped = 0;
+    for (int a = 0; a < n; ++a)
+        for (int u = 0; u < n; ++u)
+            for (int l = 0; l < 2; ++l) {
+                const ltc::ltc_table& dead = l == 0 ? t0 : t1;
+                const ltc::ltc_table& other = l == 0 ? t1 : t0;
+                if (dead.node(u, a, ltc::channel::magnitude) != 0) continue;
+                ++dropped;
+                CAPTURE(a, u, l);
+                for (const int ch : {ltc::channel::m_inv_00, ltc::channel::m_inv_02, ltc::channel::m_inv_20, ltc::channel::m_inv_22})
+                    CHECK(dead.node(u, a, ch) == other.node(u, a, ch));
+            }
+    CHECK(dropped > 0);  // the low roughnesses, where one lobe follows GGX
     // At the corners of the parameter square the 32 x 32 and the 64 x 64 grids share their nodes
     // and both fits take the magnitude and Fresnel term from the same moments: the lobes'
     // float(m (1 - s)) + float(m s) is float(m) up to three float roundings, at most
@@ -178,4 +198,69 @@ TEST_CASE("two lobes against the Monte Carlo GGX ground truth at grazing views",
     CHECK(sum2 / count <= 0.23);
     CHECK(worst2 <= 0.88);
     CHECK(sum2 < 0.5 * sum1);
+}
+
+namespace {
+
+struct mirror_errors {
+    double mean1 = 0, mean2 = 0, worst2 = 0;  // |LTC - GT| / GT: one lobe, two lobes
+};
+
+/// Small and medium rectangles (0.05 x 0.025 and 0.2 x 0.1 at distance 1) centred on the mirror
+/// direction, at each view angle and roughness, against the ground truth (MIS, 2^16 iterations,
+/// seeds from seed0; relative standard errors below 0.5%, checked).
+mirror_errors mirror_light_errors(std::initializer_list<double> thetas, std::initializer_list<double> roughnesses,
+                                  std::uint64_t seed0) {
+    mirror_errors m;
+    int count = 0;
+    for (const double theta : thetas)
+        for (const double r : roughnesses)
+            for (const double size : {0.05, 0.2}) {
+                const std::vector<dvec3> L = facing_rectangle(180, 90 - theta, size, size / 2);
+                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
+                ltc::ground_truth::options opt;
+                opt.samples = 1u << 16;
+                opt.seed = seed0 + std::uint64_t(count);
+                const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
+                const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(), 4,
+                                                          ltc::sidedness::one_sided);
+                const auto two = ltc::shade_polygon_light_two_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
+                                                                   L.data(), 4, ltc::sidedness::one_sided);
+                const double e1 = std::abs(one.specular.x - gt.mean) / gt.mean;
+                const double e2 = std::abs(two.specular.x - gt.mean) / gt.mean;
+                CAPTURE(theta, r, size, gt.mean, gt.standard_error, one.specular.x, two.specular.x, e1, e2);
+                CHECK(gt.standard_error <= 0.005 * gt.mean);
+                m.mean1 += e1, m.mean2 += e2;
+                m.worst2 = std::max(m.worst2, e2);
+                ++count;
+            }
+    m.mean1 /= count, m.mean2 /= count;
+    WARN("one lobe: mean " << 100 * m.mean1 << "%; two lobes: mean " << 100 * m.mean2 << "%, worst " << 100 * m.worst2 << "%");
+    return m;
+}
+
+}  // namespace
+
+// Where one lobe already follows GGX (lights on the mirror direction at low roughness), the
+// second lobe must not cost accuracy. These sit off the report's grid and between the table's
+// nodes, where the table fitted before fit_two_lobes' guards (dropped lobes, D(N) > 0, refits of
+// stalled nodes) failed. Bounds: the figures measured with the shipped tables and these seeds,
+// rounded up in their second digit, as above.
+TEST_CASE("two lobes near mirror roughness: mirror lights as right as with one lobe", "[two_lobe][ground_truth]") {
+    // Roughness 0-0.03 (the table's first row at the clamp alpha = 1e-4, and the cell above it),
+    // theta_v 0-75 deg. The earlier table: 30.4% mean, 100% worst (small lights at theta_v >= 60
+    // deg missed entirely); one lobe 0.032%, 0.10%. Measured: two lobes 0.0673% mean, 0.315% worst.
+    const mirror_errors m = mirror_light_errors({0.0, 30.0, 60.0, 75.0}, {0.0, 0.01, 0.02, 0.03}, 9000);
+    CHECK(m.mean2 <= 0.00068);
+    CHECK(m.worst2 <= 0.0032);
+}
+
+TEST_CASE("two lobes at low roughness near grazing: mirror lights as right as with one lobe", "[two_lobe][ground_truth]") {
+    // Roughness 0.15 and 0.18, theta_v 60-75 deg. The earlier table: lobe 2 had drifted into a
+    // spike of share 1e-6, Nelder-Mead stopped on its first simplex along the rows at roughness
+    // 0.16, and the interpolated lobes missed these lights by 14.6% mean, 41.1% worst (one lobe:
+    // 0.28%, 1.01%). Measured: two lobes 0.534% mean, 1.674% worst.
+    const mirror_errors m = mirror_light_errors({60.0, 65.0, 70.0, 75.0}, {0.15, 0.18}, 8000);
+    CHECK(m.mean2 <= 0.0054);
+    CHECK(m.worst2 <= 0.017);
 }
