@@ -388,12 +388,17 @@ two_lobe_table fit_two_lobe_table(const options& opt) {
             for (int a; (a = next_row.fetch_add(1)) < n;) {
                 two_lobe_result* row = &tab.nodes[std::size_t(a) * std::size_t(n)];
                 const double alpha = node_alpha(a, n, opt.alpha_min);
+                // The row's one-lobe fits, marched from normal incidence as fit_table does, as far
+                // as a failed node needs them.
+                node_result one_lobe = one0[std::size_t(a)];
+                int one_lobe_at = 0;
                 for (int t = 1; t < n; ++t) {
-                    // Node t's one-lobe fit, only where needed: marched along the row as fit_table does.
                     const auto one = [&] {
-                        node_result o = one0[std::size_t(a)];
-                        for (int k = 1; k <= t; ++k) o = fit_node<Brdf>(node_cos_theta(k, n, opt.cos_theta_min), alpha, o.parameters, opt);
-                        return o.parameters;
+                        while (one_lobe_at < t) {
+                            ++one_lobe_at;
+                            one_lobe = fit_node<Brdf>(node_cos_theta(one_lobe_at, n, opt.cos_theta_min), alpha, one_lobe.parameters, opt);
+                        }
+                        return one_lobe.parameters;
                     };
                     row[t] = detail::fit_two_lobes_guarded<Brdf>(node_cos_theta(t, n, opt.cos_theta_min), alpha,
                                                                  start_from(row[t - 1]), opt, true, one);
