@@ -79,7 +79,7 @@ TEMPLATE_TEST_CASE("normalization: eval(w) == jacobian(w) * D_o(normalize(M^-1 w
 
 // transformed<Other>(d): the same M over another original distribution (ltc_polygon_sampler holds
 // its lobe's Jacobian this way, whatever the lobe's edge policy): M^-1, |M^-1| and so the Jacobian
-// are copied, not recomputed, so they agree bit for bit, and D_other = J D_other,o as above.
+// are copied, not recomputed, so they agree bit for bit.
 TEMPLATE_TEST_CASE("transformed<Other>(d) keeps M^-1, |M^-1| and the Jacobian bit for bit", "[jacobian]", float, double) {
     using T = TestType;
     using vec3 = glm::vec<3, T>;

@@ -17,8 +17,9 @@ using glm::dvec3;
 constexpr double deg = 3.141592653589793 / 180.0;
 
 // The documented grid (--grid on, the default) and one off it (--grid off): view angles and
-// roughnesses between the first's and between the tables' nodes (the 32 x 32 two-lobe table's
-// nodes sit at u = sqrt(1 - cos theta_v) = t / 31 and roughness a / 31: these fall mid-cell), so
+// roughnesses between the first's, mostly between the tables' nodes (u = sqrt(1 - cos theta_v)
+// and the roughness at t / (n - 1) for n = 32 and 64; in the 32 x 32 two-lobe table roughness
+// 0.15 / 0.2 / 0.35 / 0.6 / 0.9 sit 0.65 / 0.2 / 0.85 / 0.6 / 0.9 of a cell above a node), so
 // that a table is also measured where it interpolates. Index 3 is the grazing view of each.
 inline constexpr double grid_thetas[2][4] = {{0, 30, 60, 80}, {15, 45, 65, 75}};
 inline constexpr double grid_roughnesses[2][5] = {{0.1, 0.25, 0.5, 0.75, 1.0}, {0.15, 0.2, 0.35, 0.6, 0.9}};

@@ -17,16 +17,17 @@
 // (3 at normal incidence, where both lobes are isotropic), from lobe 1 = the one-lobe fit and
 // lobe 2 = lobe 1 twice as wide with share 0.2.
 //
-// Robustness: a lobe left with almost no share is dropped (fit_two_lobes), both lobes stay
-// positive at the normal, and the table's nodes that land on a plateau of the objective are
-// refitted from their one-lobe fit (detail::fit_two_lobes_guarded): each of these fixed a failure
-// of the table between the nodes of the report's grid (near-mirror reflections missed by up to
-// 100%, mirror lights at roughness 0.15-0.18 by up to 41%: tests/test_two_lobe.cpp;
-// examples/ggx_error_report --grid off). Caveat (ggx_error_report, section 8): the fit stays
+// Robustness: a lobe left with almost no share is dropped (fit_two_lobes), and the table's nodes
+// that land on a plateau of the objective are refitted from their one-lobe fit as a single lobe
+// (detail::fit_two_lobes_guarded): each fixed a failure of the table between the nodes of the
+// report's grid (near-mirror reflections missed by up to 100%, mirror lights at roughness
+// 0.15-0.18 by up to 41%: tests/test_two_lobe.cpp; examples/ggx_error_report --grid off).
+// Caveat (ggx_error_report, section 8): the fit stays
 // fragile where the lobes' parts are not settled (roughness 0.2-0.25 at grazing views), since
 // nodes are marched from their neighbours and a table interpolates lobe by lobe; variants of the
-// objective's evaluation, of the starts, of the lobes' order, of the shear's parameterization or
-// of the dropping threshold measured while writing it were all worse on one grid or the other.
+// objective's evaluation, of the starts, of the lobes' order, of the shear's parameterization, of
+// the dropping threshold or a constraint D_l(N) > 0 measured while writing it were all worse on
+// one grid or the other.
 #pragma once
 
 #include <ltc/fitting/brdf/model.hpp>
@@ -62,7 +63,7 @@ struct two_lobe_result {
     double share = 0;                                  ///< s: the second lobe's share of the magnitude
     double magnitude = 0;                              ///< integral of rho cos
     double fresnel = 0;                                ///< integral of rho cos (1 - V.H)^5
-    double value = 0;                                  ///< the objective at the solution
+    double value = 0;                                  ///< the objective at the solution (before a lobe is dropped)
     int evaluations = 0;
     bool stalled = false;  ///< Nelder-Mead stopped on its first simplex in every round (a plateau)
 };
@@ -175,8 +176,8 @@ inline two_lobe_start start_from(const two_lobe_result& r) {
 
 /// Fits the two-lobe node of view cos(theta_v) and roughness alpha from `start`; with
 /// `refit_first` false, lobe 1 stays as in `start` and only lobe 2 and the share are fitted
-/// (5 numbers; measured by examples/ggx_error_report, "cells, lobe 1 L3": 6.2% mean error
-/// against 2.2% with both lobes fitted, so the tables refit both).
+/// (5 numbers; measured by examples/ggx_error_report, "cells, lobe 1 L3": 6.17% mean error
+/// against 2.22% with both lobes fitted, so the tables refit both).
 template <template <typename> class Brdf>
 two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_start& start, const options& opt,
                               bool refit_first = true) {
@@ -243,12 +244,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
                     !std::isfinite(p[l].m11) || !std::isfinite(p[l].m22))
                     return std::numeric_limits<double>::infinity();
                 const structured_inverse inv = invert_structured(p[l].matrix());
-                // D_l(N) > 0 (M_l^-1 N in the cosine's hemisphere), as GGX's rho cos is positive
-                // at the normal. Without it, the lobes at the smallest roughness (alpha 1e-4) drifted
-                // in their shear m31 to 50-150 times their width, of either sign from node to node:
-                // their own horizon passed next to their peak, and interpolated between such nodes
-                // the table lost 40% of a mirror light at theta_v = 30 deg.
-                if (!inv.ok || !(inv.inverse[2][2] > 0)) return std::numeric_limits<double>::infinity();
+                if (!inv.ok) return std::numeric_limits<double>::infinity();
                 mi[l] = inv.inverse;
             }
             const double m = mom.magnitude;
@@ -327,22 +323,22 @@ struct two_lobe_table {
 
 namespace detail {
 
-/// fit_two_lobes from `start`; where that fails, refitted from the node's one-lobe fit `one()` as a
-/// single lobe (both lobes that fit, share 0) and the better of the two kept. Failed: an implausible value (relative
-/// errors of the order of 30% and more), and along a row, where the grazing nodes' values reach
-/// 0.6 (theta_v near 90 deg), only if Nelder-Mead also stalled on its first simplex or found no
-/// admissible point (a plateau of the objective, or a start outside the constraints). Found so:
+/// fit_two_lobes from `start`; where that fails, refitted from the node's one-lobe fit `one()` as
+/// a single lobe (both lobes that fit, share 0) and the better of the two kept. Failed: an
+/// implausible value (relative errors of the order of 30% and more); along a row, where the
+/// grazing nodes' values reach 0.6 (theta_v near 90 deg), only if Nelder-Mead also stalled on its
+/// first simplex or found no admissible point (a plateau of the objective). Found so:
 /// - in the normal-incidence chain, whose nodes fit to values about 1e-5: started from the
 ///   previous node's lobes, 10x too wide at the smallest roughness (alpha 1e-3 to the clamp
 ///   1e-4), the last node sat on a plateau (value 1.34), and the table missed near-mirror
 ///   reflections by up to 100% (tests/test_two_lobe.cpp);
-/// - along the rows of roughness 0.05-0.07 towards grazing: a start whose lobes missed GGX's
-///   (values 0.7-1, then no admissible point), carried to the end of the row.
+/// - along the rows of roughness 0-0.1 towards grazing: starts whose lobes missed GGX's (values
+///   0.7 and more), carried along the row.
 /// A refit from start_from_one_lobe (a second lobe at share 0.2) instead revived second lobes at
-/// grazing nodes of roughness 0.1, and the main example's gold tiles there went from 5.4% to 11.2%
-/// (examples/render --lobes 2). A choice by value between the two starts at every node was
-/// measured worse (lobes swapping parts between neighbours, which the table interpolates lobe by
-/// lobe).
+/// grazing nodes of roughness 0.1, where the main example's gold tiles got 2x worse (11.2%
+/// against 5.4%, examples/render --lobes 2, measured with a constraint D(N) > 0 also in place). A
+/// choice by value between the two starts at every node was measured worse (lobes swapping parts
+/// between neighbours, which the table interpolates lobe by lobe).
 template <template <typename> class Brdf, typename OneLobe>
 two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_lobe_start& start, const options& opt,
                                       bool along_row, OneLobe&& one) {
@@ -353,8 +349,10 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
     single.lobes = {one(), one()};
     single.share = 0;
     two_lobe_result again = fit_two_lobes<Brdf>(cos_theta, alpha, single, opt);
-    again.evaluations += r.evaluations;
-    return again.value < r.value ? again : r;
+    const int evaluations = r.evaluations + again.evaluations;
+    two_lobe_result& kept = again.value < r.value ? again : r;
+    kept.evaluations = evaluations;
+    return kept;
 }
 
 }  // namespace detail

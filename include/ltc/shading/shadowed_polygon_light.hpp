@@ -184,8 +184,13 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         projected_polygon_sampler<T, max_vertices> cosine_sampler;
         if (ks > 0 && !reject) lobe_sampler = ltc_polygon_sampler<T, max_vertices>(d, local, n);
         if (kd > 0 && cosine) cosine_sampler = projected_polygon_sampler<T, max_vertices>(local, n);
-        // The specular technique's density per draw at l: D(l) by rejection, else D(l) / I_D.
-        const auto lobe_density = [&](const vec3& l) { return ks > 0 ? d.eval(l) / (reject ? T(1) : i_d) : T(0); };
+        // The specular technique's density per draw at l: D(l) by rejection, else the exact
+        // sampler's D(l) / I_D, its I_D its own (in float the shading's i_d, by the minimax edge
+        // terms, can be far off where it is tiny): every technique's weight then uses the same
+        // density, and an empty() sampler, which draws nothing, has density 0.
+        const auto lobe_density = [&](const vec3& l) {
+            return ks == 0 ? T(0) : reject ? d.eval(l) : lobe_sampler.pdf(l);
+        };
         // The plan's density at l (world w, the light's plane at distance t along it), given lobe_density(l).
         const auto density = [&](const vec3& l, const vec3& w, T t, T lobe) {
             T p = T(draws) * lobe;
@@ -197,8 +202,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
             const T t = plane_distance(w);
             add(l, w, t, density(l, w, t, lobe));
         };
-        // The exact sampler's own pdf, D / I_D, is lobe_density (I_D by its own closed form, equal
-        // to i_d up to rounding): no second evaluation of D.
+        // A sample's pdf is lobe_density at its direction: no second evaluation of D.
         for (std::size_t k = 0; k < ks && !reject && !lobe_sampler.empty(); ++k) {
             const polygon_sample<T> x = lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation));
             add_local(x.direction, x.pdf);
@@ -215,8 +219,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
                 if (hit) add_local(l, lobe_density(l));
             }
         }
-        for (std::size_t k = 0; k < kd && cosine && !cosine_sampler.empty(); ++k)
-        {
+        for (std::size_t k = 0; k < kd && cosine && !cosine_sampler.empty(); ++k) {
             const vec3 l = cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation)).direction;
             add_local(l, lobe_density(l));
         }
