@@ -1,7 +1,8 @@
 // Shadowed polygonal lights (ltc/shading/shadowed_polygon_light.hpp): the ratio estimator of
 // Heitz, Hill and McGuire 2018 and its unbiased companion, with a visibility callback.
 //   (a) nothing occludes: the ratio is exactly 1, so the result is the analytic shading bit for
-//       bit, for every sample plan and every K; each sample makes one query;
+//       bit, for every sample plan and every K (with either analytic part, one or two lobes);
+//       each sample makes one query;
 //   (b) everything occludes: 0; a light facing away (one-sided) or degenerate input: 0 and no
 //       query;
 //   (c) a half-space occluder through the shading point (visible: d . m >= 0), whose visible part
@@ -23,6 +24,7 @@
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -107,18 +109,26 @@ mean_and_error over_shifts(int R, F&& value) {
 
 TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly", "[shadows]") {
     const auto [view, roughness] = GENERATE(table<float, float>({{0, 0.1f}, {40, 0.3f}, {70, 0.6f}, {85, 1.0f}}));
+    const auto lobes = GENERATE(ltc::analytic_lobes::one, ltc::analytic_lobes::two);
     const scene s = make_scene(view, roughness);
+    const auto two = ltc::shade_polygon_light_two_lobe(s.P, s.N, s.V, s.roughness, glm::vec3(0.04f), kAlbedo, kRadiance,
+                                                       s.light, 4, ltc::sidedness::one_sided);
     std::size_t calls = 0;
     const auto always = [&](const glm::vec3&, const glm::vec3&, float) { return ++calls > 0; };
     for (int plan = 0; plan < kPlans; ++plan)
         for (std::size_t K : {1u, 4u, 16u}) {
-            CAPTURE(view, roughness, plan, K);
+            CAPTURE(view, roughness, lobes == ltc::analytic_lobes::two, plan, K);
             ltc::shadow_options<float> o = plan_options(plan);
             o.samples = K;
             o.rotation = glm::vec2(0.3f, 0.7f);
+            o.lobes = lobes;
             calls = 0;
             const auto r = shade(s, glm::vec3(0.04f), always, o);
             REQUIRE(r.unshadowed.specular.x > 0.0f);
+            if (lobes == ltc::analytic_lobes::two) {  // the analytic part: shade_polygon_light_two_lobe's bits
+                CHECK(r.unshadowed.specular == two.specular);
+                CHECK(r.unshadowed.diffuse == two.diffuse);
+            }
             CHECK(r.ratio.specular == r.unshadowed.specular);
             CHECK(r.ratio.diffuse == r.unshadowed.diffuse);
             // K queries, or a random number of hits averaging K_s where the specular share is

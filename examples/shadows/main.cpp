@@ -3,7 +3,7 @@
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
 //           [--mis-spp LIST] [--reference-spp N] [--threads K] [--out DIR] [--seed S]
-//           [--exposure E] [--help]
+//           [--exposure E] [--lobes 1|2] [--help]
 //
 // The scene (z up; scene.hpp), every surface triangles of one Embree scene (tracer.hpp): a floor
 // of unit tiles, GGX dielectrics (F0 = 0.04, Lambertian albedo 0.5) of roughness 0.15, 0.3 and
@@ -32,6 +32,8 @@
 //                    normals, or the cosine lobe) and one light-area sample, balance heuristic,
 //                    of GGX with Schlick's Fresnel plus Lambert: the BRDF the LTC approximates
 //                    (shade_mis.hpp).
+// With --lobes 2, (a), (a+) and (b) take their analytic part from the opt-in two-lobe GGX table
+// (ltc::analytic_lobes::two); their samples, (c) and the reference do not change.
 // "spp" is K for (a), (a+) and (b) and the iterations of (c): per pixel, (a) and (b) cast up to K
 // shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) up to K shadow and K BRDF rays
 // (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
@@ -140,11 +142,13 @@ int main(int argc, char** argv) {
     std::printf("%d x %d pixels (%zu floor: %zu dielectric, %zu gold; %zu occluder), %u thread%s\n", W, H,
                 floor_pixels, floor_pixels - gold_pixels, gold_pixels, occluder_pixels, opt.threads,
                 opt.threads == 1 ? "" : "s");
+    if (opt.lobes == ltc::analytic_lobes::two)
+        std::printf("(a), (a+), (b): the analytic part from the two-lobe GGX table (--lobes 2)\n");
 
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr
     const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
-                                           mix_seed(opt.seed, 0x7EFu), 1, "reference");
+                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 1, "reference");
     std::size_t nonfinite = ref.nonfinite;
     const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
     std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "
@@ -161,7 +165,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 4; ++k) {
         const method m = methods[k];
         for (int spp : *lists[k]) {
-            const method_image r = render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed);
+            const method_image r = render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes);
             nonfinite += r.nonfinite;
             const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
             const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
@@ -180,7 +184,7 @@ int main(int argc, char** argv) {
     // (a)'s and (a+)'s errors split into their noise and bias: a second render of each with other seeds.
     for (seed_pair& p : pairs) {
         const method_image second =
-            render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp, mix_seed(opt.seed, 0x5EEDu), 1);
+            render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp, mix_seed(opt.seed, 0x5EEDu), opt.lobes, 1);
         p.second = second.img;
         nonfinite += second.nonfinite;
     }

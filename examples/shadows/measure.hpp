@@ -42,11 +42,12 @@ struct method_image {
     std::size_t nonfinite = 0;  // pixels with a non-finite value (expected 0), made black
 };
 
-/// Every pixel by `which` at `spp`, seeded by (seed, which, spp, pixel); timed (file comment) over
-/// up to max_runs runs (1: the reference, the second seeds). With a label: a progress bar on stderr.
+/// Every pixel by `which` at `spp`, seeded by (seed, which, spp, pixel), the ratio methods' analytic
+/// part with `lobes`; timed (file comment) over up to max_runs runs (1: the reference, the second
+/// seeds). With a label: a progress bar on stderr.
 inline method_image render_method(const scene& s, const tracer& tr, const std::vector<pixel_hit>& hits, int W, int H,
-                                  unsigned threads, method which, int spp, std::uint64_t seed, int max_runs = 5,
-                                  const char* label = nullptr) {
+                                  unsigned threads, method which, int spp, std::uint64_t seed, ltc::analytic_lobes lobes,
+                                  int max_runs = 5, const char* label = nullptr) {
     const std::size_t count = static_cast<std::size_t>(W) * H;
     // (a+) draws (a)'s random numbers (common random numbers: where K <= K0 its first call is (a)'s
     // call), so that the difference of the two measures its early stop with little noise.
@@ -65,7 +66,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
             [&](int y) {
                 for (int x = 0; x < W; ++x) {
                     const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i));
+                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes);
                 }
             },
             label);

@@ -4,6 +4,8 @@
 
 #include "common/cli.hpp"
 
+#include <ltc/shading/shadowed_polygon_light.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,13 +21,14 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> area_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (b): K (cheaper: a longer sweep)
     std::vector<int> mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};   // (c): iterations
     int reference_spp = 4096;  // (c)'s iterations for the reference
+    ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b): the analytic part's table
 };
 
 inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]\n"
         "          [--mis-spp LIST] [--reference-spp N] [--threads K] [--out DIR] [--seed S]\n"
-        "          [--exposure E] [--help]\n"
+        "          [--exposure E] [--lobes 1|2] [--help]\n"
         "\n"
         "Renders a tiled GGX floor (dielectric and gold tiles) and two grey occluders lit by one quad\n"
         "light, with shadows traced by Embree, four ways: (a) LTC + ratio-estimator shadows\n"
@@ -49,6 +52,9 @@ inline void print_help(const char* argv0) {
         "  --area-spp LIST     K of (b), up to K rays (default 1,2,4,...,256)\n"
         "  --mis-spp LIST      iterations of (c), up to 2 rays each (default 1,2,4,...,256)\n"
         "  --reference-spp N   iterations of the reference (default 4096)\n"
+        "  --lobes 1|2         the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
+        "                      (default) or the two-lobe table (ltc::analytic_lobes::two); the samples\n"
+        "                      and the reference do not change\n"
         "  --threads K         worker threads (default: all hardware threads); the images do not\n"
         "                      depend on it, the times do\n"
         "  --out DIR           output directory, created if needed (default: the current directory)\n"
@@ -88,6 +94,11 @@ inline int parse_args(int argc, char** argv, options& o) {
                                  : a == "--mis-spp"      ? &o.mis_spp
                                                          : nullptr;
         if (list != nullptr) return parse_list(v.text, 1 << 20, *list) ? option_status::taken : option_status::bad;
+        if (a == "--lobes") {
+            if (!v.integer_in(1, 2)) return option_status::bad;
+            o.lobes = v.number == 2 ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+            return option_status::taken;
+        }
         if (a != "--reference-spp") return option_status::unknown;
         if (!v.integer_in(1, 1e8)) return option_status::bad;
         o.reference_spp = static_cast<int>(v.number);

@@ -58,7 +58,7 @@ constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
 
 /// One call of the library at the pixel: K samples by `sampler`, a random lattice rotation.
 inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, const tracer& tr, const pixel_hit& h,
-                                                               ltc::shadow_sampler sampler, int K,
+                                                               ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
                                                                ltc::ground_truth::splitmix64& rng) {
     const material& m = s.materials[static_cast<std::size_t>(h.material)];
     ltc::shadow_options<float> options;
@@ -66,6 +66,7 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
     const float rx = uniform_float(rng), ry = uniform_float(rng);
     options.rotation = glm::vec2(rx, ry);
     options.sampler = sampler;
+    options.lobes = lobes;
     const vec3 N = h.n;
     const auto visible = [&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
         return tr.light_visible(origin, N, unit_direction, distance);
@@ -83,20 +84,20 @@ inline bool agreed(const glm::vec3& ratio, const glm::vec3& unshadowed) {
 
 /// Radiance towards the camera at one pixel by (a), (a+) or (b) with K = spp samples.
 inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                                std::uint64_t seed) {
+                                std::uint64_t seed, ltc::analytic_lobes lobes) {
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
     if (!h.shaded() || spp <= 0) return out;
     ltc::ground_truth::splitmix64 rng(seed);
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
-    const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, rng);
+    const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, lobes, rng);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;
-    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed(s, tr, h, sampler, spp, rng);
+    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed(s, tr, h, sampler, spp, lobes, rng);
     const double w = static_cast<double>(first) / static_cast<double>(first + spp);
     out.radiance = w * out.radiance + (1.0 - w) * dvec3(more.ratio.specular + more.ratio.diffuse);
     out.rays += more.rays;
@@ -106,8 +107,8 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
 /// One pixel by any method: K = spp samples for (a), (a+) and (b), spp MIS iterations (one BRDF
 /// and one light sample each) for (c).
 inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                          std::uint64_t seed) {
-    return which == method::mis ? shade_mis(s, tr, h, spp, seed) : shade_ratio(s, tr, h, which, spp, seed);
+                          std::uint64_t seed, ltc::analytic_lobes lobes) {
+    return which == method::mis ? shade_mis(s, tr, h, spp, seed) : shade_ratio(s, tr, h, which, spp, seed, lobes);
 }
 
 }  // namespace shadows

@@ -1,6 +1,7 @@
 // libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
 // and any matrix accepted by the checked factory, every integral, density and sample of the
-// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness; the
+// library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness, with one
+// or two lobes and with shadows (the ratio estimator, any sample plan); the
 // batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
 // CPU runs) agrees with the scalar path; and the textured lights (fuzz_textured.hpp: tiny
 // textures, the exact cell integrals with fuzzed budgets and tolerances, textured shading with
@@ -18,6 +19,7 @@
 #include <ltc/ltc.hpp>
 #include <ltc/shading/clipless.hpp>
 #include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/shadowed_polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -97,6 +99,26 @@ void run(FuzzedDataProvider& in) {
                                                           ltc::sidedness::two_sided, clip);
         require_finite(r2.specular, "two-lobe GGX specular");
         require_finite(r2.diffuse, "two-lobe GGX diffuse");
+    }
+
+    // Shadowed shading (the ratio estimator): any sample plan, one or two lobes; the visibility
+    // alternates, so that both of each ratio's sums see samples.
+    {
+        std::size_t queries = 0;
+        const auto alternate = [&](const vec3&, const vec3&, T) { return (queries++ & 1u) == 0; };
+        ltc::shadow_options<T> o;
+        o.samples = in.ConsumeIntegralInRange<std::size_t>(0, 8);
+        o.rotation = u;
+        o.sampler = in.ConsumeBool() ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
+        o.diffuse = in.ConsumeBool() ? ltc::diffuse_sampler::cosine : ltc::diffuse_sampler::light_area;
+        o.rejection_from = T(2) * in.ConsumeProbability<T>();
+        o.lobes = in.ConsumeBool() ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+        const auto r = ltc::shade_polygon_light_shadowed(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
+                                                         ltc::sidedness::one_sided, alternate, o);
+        for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {
+            require_finite(t->specular, "shadowed specular");
+            require_finite(t->diffuse, "shadowed diffuse");
+        }
     }
 
     check_distribution<T, ltc::uniform_sphere<T>>(pv, n, m, use_inverse, u);

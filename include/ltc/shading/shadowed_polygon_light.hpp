@@ -43,9 +43,15 @@
 // (Cranley-Patterson rotation: pass a random shift per pixel to turn the structured error into
 // noise).
 //
-// Outputs: `unshadowed` (= shade_polygon_light, horizon clipping ltc_space), `ratio` (the
-// estimator above: biased, consistent, exact when nothing occludes the light) and `unbiased`
-// (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the same samples and
+// The analytic part is the one-lobe shading, or with options.lobes = analytic_lobes::two the
+// opt-in two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the ratio then corrects a
+// closer unshadowed result (the shadows example: RMS bias against the path-traced truth 10.4%
+// with one lobe, 4.6% with two, at K = 16), at the cost of its second lobe's integral.
+//
+// Outputs: `unshadowed` (= shade_polygon_light or shade_polygon_light_two_lobe, horizon clipping
+// ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
+// light) and `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
+// same samples and
 // visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of
 // the LTC's fitting error). A light that faces away (one-sided) or lies below the horizon gives 0
 // and makes no queries; K = 0 gives the analytic result.
@@ -62,6 +68,7 @@
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <glm/glm.hpp>
 
@@ -73,6 +80,10 @@ namespace ltc {
 enum class shadow_sampler { ltc_polygon, light_area };
 /// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
 enum class diffuse_sampler { light_area, cosine };
+/// The analytic, unshadowed part: the GGX table's lobe, or the opt-in two-lobe table
+/// (ltc/shading/two_lobe_polygon_light.hpp; the samples still follow the one-lobe LTC, which the
+/// estimator only needs as a density).
+enum class analytic_lobes { one, two };
 
 template <typename T>
 struct shadow_options {
@@ -81,6 +92,7 @@ struct shadow_options {
     shadow_sampler sampler = shadow_sampler::ltc_polygon;
     diffuse_sampler diffuse = diffuse_sampler::light_area;
     T rejection_from{T(0.125)};     ///< I_D from which the LTC share is drawn by rejection (> 1: never)
+    analytic_lobes lobes = analytic_lobes::one;
 };
 
 template <typename T>
@@ -133,7 +145,10 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     if (!frame.valid || n < 3 || n > max_vertices) return r;
     const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
     const polygon_light_integrals<T> I = integrate_polygon_light<edge_policy::automatic>(frame, lobe.m_inv, P, vertices, n);
-    r.unshadowed = polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
+    r.unshadowed = options.lobes == analytic_lobes::two
+                       ? shade_polygon_light_two_lobe(frame, ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness), P, F0,
+                                                      albedo, radiance, vertices, n, side)
+                       : polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
     r.ratio = r.unshadowed;
     const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
     const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;
