@@ -22,12 +22,11 @@
 // (detail::fit_two_lobes_guarded): each fixed a failure of the table between the nodes of the
 // report's grid (near-mirror reflections missed by up to 100%, mirror lights at roughness
 // 0.15-0.18 by up to 41%: tests/test_two_lobe.cpp; examples/ggx_error_report --grid off).
-// Caveat (ggx_error_report, section 8): the fit stays
-// fragile where the lobes' parts are not settled (roughness 0.2-0.25 at grazing views), since
-// nodes are marched from their neighbours and a table interpolates lobe by lobe; variants of the
-// objective's evaluation, of the starts, of the lobes' order, of the shear's parameterization, of
-// the dropping threshold or a constraint D_l(N) > 0 measured while writing it were all worse on
-// one grid or the other.
+// Caveat (ggx_error_report, section 8): the fit stays fragile where the lobes' parts are not
+// settled (roughness 0.2-0.25 at grazing views), since nodes are marched from their neighbours
+// and a table interpolates lobe by lobe; variants of the objective's evaluation, of the starts, of
+// the lobes' order, of the shear's parameterization, of the dropping threshold or a constraint
+// D_l(N) > 0 measured while writing it were all worse on one grid or the other.
 #pragma once
 
 #include <ltc/fitting/brdf/model.hpp>
@@ -345,8 +344,9 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
     constexpr double implausible = 0.1;
     two_lobe_result r = fit_two_lobes<Brdf>(cos_theta, alpha, start, opt);
     if (r.value <= implausible || (along_row && !r.stalled && std::isfinite(r.value))) return r;
+    const ltc_parameters lobe = one();
     two_lobe_start single;
-    single.lobes = {one(), one()};
+    single.lobes = {lobe, lobe};
     single.share = 0;
     two_lobe_result again = fit_two_lobes<Brdf>(cos_theta, alpha, single, opt);
     const int evaluations = r.evaluations + again.evaluations;

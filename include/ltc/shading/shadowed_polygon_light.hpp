@@ -46,7 +46,8 @@
 // The analytic part is the one-lobe shading, or with options.lobes = analytic_lobes::two the
 // opt-in two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the ratio then corrects a
 // closer unshadowed result (the shadows example: RMS bias against the path-traced truth 10.4%
-// with one lobe, 4.6% with two, at K = 16), at the cost of its second lobe's integral.
+// with one lobe, 4.7% with two, at K = 16), at the cost of its second lobe's integral; the
+// samples then follow its first lobe.
 //
 // Outputs: `unshadowed` (= shade_polygon_light or shade_polygon_light_two_lobe, horizon clipping
 // ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
@@ -72,6 +73,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 
@@ -81,7 +83,7 @@ enum class shadow_sampler { ltc_polygon, light_area };
 /// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
 enum class diffuse_sampler { light_area, cosine };
 /// The analytic, unshadowed part: the GGX table's lobe, or the opt-in two-lobe table
-/// (ltc/shading/two_lobe_polygon_light.hpp; the samples still follow the one-lobe LTC, which the
+/// (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe, which the
 /// estimator only needs as a density).
 enum class analytic_lobes { one, two };
 
@@ -143,12 +145,16 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     shadowed_polygon_light_result<T> r;
     const shading_frame<T> frame = make_shading_frame(N, V);
     if (!frame.valid || n < 3 || n > max_vertices) return r;
-    const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
+    // The sampled lobe: the GGX table's, or with two lobes the first (the second adds its term:
+    // shade_polygon_light_two_lobe's bits, without a second form factor).
+    const bool two = options.lobes == analytic_lobes::two;
+    const std::array<ltc_coefficients<T>, 2> lobes =
+        two ? ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness)
+            : std::array<ltc_coefficients<T>, 2>{ggx::fetch<T>(frame.cos_theta_v, roughness), ltc_coefficients<T>{}};
+    const ltc_coefficients<T>& lobe = lobes[0];
     const polygon_light_integrals<T> I = integrate_polygon_light<edge_policy::automatic>(frame, lobe.m_inv, P, vertices, n);
-    r.unshadowed = options.lobes == analytic_lobes::two
-                       ? shade_polygon_light_two_lobe(frame, ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness), P, F0,
-                                                      albedo, radiance, vertices, n, side)
-                       : polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
+    r.unshadowed = polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
+    if (two) r.unshadowed.specular += second_lobe_specular(frame, lobes[1], P, F0, radiance, vertices, n, side);
     r.ratio = r.unshadowed;
     const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
     const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;

@@ -23,6 +23,17 @@
 
 namespace ltc {
 
+/// The second lobe's specular term (its magnitude and Fresnel carrying its share), which
+/// shade_polygon_light_two_lobe adds to the first lobe's shading: its LTC integral alone.
+template <typename Policy = edge_policy::automatic, typename T>
+inline glm::vec<3, T> second_lobe_specular(const shading_frame<T>& frame, const ltc_coefficients<T>& lobe,
+                                           const glm::vec<3, T>& P, const glm::vec<3, T>& F0,
+                                           const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
+                                           sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
+    const T second = integrate_polygon_light_ltc<Policy>(frame, lobe.m_inv, P, vertices, n, clip);
+    return radiance * brdf_scale(F0, lobe) * apply_sidedness(second, side);
+}
+
 /// Shading with explicit coefficients for both lobes (m_inv in the local frame of `frame`; each
 /// lobe's magnitude and fresnel carrying its share, as ggx_two_lobe::fetch returns them).
 template <typename Policy = edge_policy::automatic, typename T>
@@ -31,8 +42,7 @@ inline polygon_light_result<T> shade_polygon_light_two_lobe(
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
     polygon_light_result<T> r = shade_polygon_light<Policy>(frame, lobes[0], P, F0, albedo, radiance, vertices, n, side, clip);
-    const T second = integrate_polygon_light_ltc<Policy>(frame, lobes[1].m_inv, P, vertices, n, clip);
-    r.specular += radiance * brdf_scale(F0, lobes[1]) * apply_sidedness(second, side);
+    r.specular += second_lobe_specular<Policy>(frame, lobes[1], P, F0, radiance, vertices, n, side, clip);
     return r;
 }
 
