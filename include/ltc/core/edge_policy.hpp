@@ -130,6 +130,51 @@ struct minimax_rational : detail::symmetric_fit<minimax_rational> {
     }
 };
 
+/// Degree-21 polynomial in y = 1 - c, the Chebyshev interpolant of f(c) = acos(c) / sqrt(1 - c^2)
+/// on c in [0, 1] (22 nodes; coefficients computed in long double, with acos(1 - y) as
+/// 2 asin(sqrt(y / 2)) so that the reference is accurate near y = 0: the interpolant is within
+/// 6.3e-18 of f in exact arithmetic), extended to c < 0 by f(c) = pi / s - f(-c): accurate to
+/// double rounding (5.0 u, against 2.7 u for atan2 / s: tests/test_edge_policies.cpp) without
+/// atan2, and for c >= 0 without a square root or a division. In float it is no better than
+/// `polynomial`. The two-lobe fit's objective uses it (ltc/fitting/fit_two_lobes.hpp), where
+/// atan2 took 26% of the time.
+struct polynomial_double : detail::symmetric_fit<polynomial_double> {
+    template <typename V>
+    LTC_HOST_DEVICE LTC_INLINE static void evaluate_positive_branch(const V& y, V& f) {
+        using T = detail::scalar_of_t<V>;
+        constexpr T c[22] = {T(1.0),
+                             T(0.33333333333333715),
+                             T(0.13333333333268454),
+                             T(0.057142857185552724),
+                             T(0.02539682392733603),
+                             T(0.01154404228846063),
+                             T(0.005327577998404975),
+                             T(0.0024905834816810303),
+                             T(0.0011401075923545),
+                             T(0.0007160351200951709),
+                             T(-0.000407509460495703),
+                             T(0.0022976170305582856),
+                             T(-0.005459382236540478),
+                             T(0.011105962639703648),
+                             T(-0.017526375815214122),
+                             T(0.021811556952889076),
+                             T(-0.021036443306365983),
+                             T(0.015452524367719888),
+                             T(-0.008355646766722203),
+                             T(0.003145507723093033),
+                             T(-0.0007384032011032105),
+                             T(8.222460746765137e-05)};
+        // Estrin's scheme: Horner's 21 dependent multiply-adds made 5 levels.
+        const V y2 = y * y, y4 = y2 * y2, y8 = y4 * y4, y16 = y8 * y8;
+        V q[11];
+        for (int i = 0; i < 11; ++i) q[i] = c[2 * i] + c[2 * i + 1] * y;
+        const V r0 = q[0] + q[1] * y2, r1 = q[2] + q[3] * y2, r2 = q[4] + q[5] * y2, r3 = q[6] + q[7] * y2,
+                r4 = q[8] + q[9] * y2;
+        const V s0 = r0 + r1 * y4, s1 = r2 + r3 * y4, s2 = r4 + q[10] * y4;
+        f = (s0 + s1 * y8) + s2 * y16;
+    }
+};
+
 /// The rational fit of the paper's reference shader code (Heitz et al. 2016, ltc.glsl,
 /// IntegrateEdgeVec), times 2 pi (the shader folds 1 / (2 pi) into it); for c < 0 it uses
 /// 1 / sqrt(max(1 - c^2, 1e-7)) as the shader does.
