@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle
@@ -262,4 +263,23 @@ TEST_CASE("two lobes at low roughness near grazing: mirror lights within 2%", "[
     const mirror_errors m = mirror_light_errors({60.0, 65.0, 70.0, 75.0}, {0.15, 0.18}, 8000);
     CHECK(m.mean2 <= 0.0061);
     CHECK(m.worst2 <= 0.020);
+}
+
+TEST_CASE("fit_two_lobe_table: the same table on any number of threads", "[two_lobe][fit]") {
+    // The chain of normal-incidence nodes runs on the calling thread while the others take rows
+    // as their first node is fitted: the table must not depend on that schedule.
+    ltc::fit::options opt;
+    opt.size = 4;
+    opt.threads = 1;
+    const std::vector<float> one = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt).packed();
+    opt.threads = 3;
+    const std::vector<float> three = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt).packed();
+    REQUIRE(one.size() == three.size());
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        CAPTURE(i);
+        CHECK(std::isfinite(one[i]));
+        CHECK(one[i] == three[i]);
+    }
+    opt.size = 1;
+    CHECK_THROWS_AS(ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt), std::invalid_argument);
 }

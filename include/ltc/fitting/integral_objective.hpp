@@ -208,9 +208,11 @@ integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const 
     return r;
 }
 
-/// The LTC integrals I_k of the distribution of m_inv (any scale, ltc_space clipping).
-inline void ltc_integrals(const integral_targets& t, const glm::dmat3& m_inv, double* out) {
-    const auto D = transformed<clamped_cosine<double>>::from_inverse(m_inv);
+/// The LTC integrals I_k of the distribution of m_inv (any scale, ltc_space clipping), their edge
+/// terms evaluated by Policy (ltc/core/edge_policy.hpp).
+template <typename Policy = edge_policy::exact>
+void ltc_integrals(const integral_targets& t, const glm::dmat3& m_inv, double* out) {
+    const auto D = transformed<clamped_cosine<double, Policy>>::from_inverse(m_inv);
     for (std::size_t k = 0; k < t.polygons.size(); ++k) out[k] = D.integrate(t.polygons[k].vertices.data(), 6);
 }
 
