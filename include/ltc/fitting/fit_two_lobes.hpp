@@ -52,6 +52,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace ltc {
@@ -272,13 +273,17 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
         };
         const vec u0 = to_vec();
         const int max_evaluations = opt.max_evaluations * 5;
-        const auto res = refit_first ? (isotropic ? detail::minimize_padded<3>(objective, u0, step, opt.tolerance, max_evaluations)
-                                                  : detail::minimize_padded<N>(objective, u0, step, opt.tolerance, max_evaluations))
-                                     : (isotropic ? detail::minimize_padded<2>(objective, u0, step, opt.tolerance, max_evaluations)
-                                                  : detail::minimize_padded<5>(objective, u0, step, opt.tolerance, max_evaluations));
+        // The numbers fitted: each fitted lobe's dims and the share's logit (9, 5, 3 or 2).
+        const int fitted = (refit_first ? 2 * dims : dims) + 1;
+        const auto minimize = [&](auto dim) {
+            return detail::minimize_padded<decltype(dim)::value>(objective, u0, step, opt.tolerance, max_evaluations);
+        };
+        const auto res = fitted == 9   ? minimize(std::integral_constant<std::size_t, 9>())
+                         : fitted == 5 ? minimize(std::integral_constant<std::size_t, 5>())
+                         : fitted == 3 ? minimize(std::integral_constant<std::size_t, 3>())
+                                       : minimize(std::integral_constant<std::size_t, 2>());
         r.evaluations += res.evaluations;
-        const int simplex = (refit_first ? (isotropic ? 3 : int(N)) : (isotropic ? 2 : 5)) + 1;
-        moved = moved || res.evaluations > simplex;
+        moved = moved || res.evaluations > fitted + 1;  // more than the first simplex
         r.value = res.value;
         from_vec(res.x, r.lobes.data(), r.share);
         step *= 0.25;
