@@ -1,7 +1,8 @@
 // libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
 // and any matrix accepted by the checked factory, every integral, density and sample of the
 // library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness, with one
-// or two lobes and with shadows (the ratio estimator, any sample plan); the
+// or two lobes, point by point and in batches (every instruction set this CPU runs), and with
+// shadows (the ratio estimator, any sample plan); the
 // batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
 // CPU runs) agrees with the scalar path; and the textured lights (fuzz_textured.hpp: tiny
 // textures, the exact cell integrals with fuzzed budgets and tolerances, textured shading with
@@ -20,6 +21,8 @@
 #include <ltc/shading/clipless.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
+#include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -99,6 +102,40 @@ void run(FuzzedDataProvider& in) {
                                                           ltc::sidedness::two_sided, clip);
         require_finite(r2.specular, "two-lobe GGX specular");
         require_finite(r2.diffuse, "two-lobe GGX diffuse");
+    }
+
+    // The same point in the batch shading, one and two lobes, with every instruction set: 17 items
+    // (full vectors and a tail at every width), roughness from the fuzzed one to 1.
+    {
+        constexpr std::size_t count = 17;
+        std::vector<T> columns[16], results[6];
+        for (int c = 0; c < 16; ++c) columns[c].assign(count, T(0));
+        for (auto& r : results) r.assign(count, T(0));
+        for (std::size_t i = 0; i < count; ++i) {
+            const T values[10] = {P.x, P.y, P.z, N.x, N.y, N.z, V.x, V.y, V.z,
+                                  roughness + (T(1) - roughness) * T(i) / T(count - 1)};
+            for (int c = 0; c < 10; ++c) columns[c][i] = values[c];
+            for (int c = 10; c < 13; ++c) columns[c][i] = T(0.04);
+            for (int c = 13; c < 16; ++c) columns[c][i] = T(0.5);
+        }
+        ltc::batch::shading_points<T> points;
+        const T** fields[16] = {&points.px, &points.py, &points.pz, &points.nx, &points.ny, &points.nz,
+                                &points.vx, &points.vy, &points.vz, &points.roughness, &points.f0[0], &points.f0[1],
+                                &points.f0[2], &points.albedo[0], &points.albedo[1], &points.albedo[2]};
+        for (int c = 0; c < 16; ++c) *fields[c] = columns[c].data();
+        ltc::batch::shading_results<T> out;
+        for (int c = 0; c < 3; ++c) out.specular[c] = results[c].data(), out.diffuse[c] = results[3 + c].data();
+        for (const auto isa : ltc::batch::instruction_sets) {
+            for (int lobes = 1; lobes <= 2; ++lobes) {
+                if (lobes == 1)
+                    ltc::batch::shade_polygon_light(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out, count, isa);
+                else
+                    ltc::batch::shade_polygon_light_two_lobe(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out,
+                                                             count, isa);
+                for (const auto& r : results)
+                    for (const T x : r) require_finite(x, "batch GGX shading");
+            }
+        }
     }
 
     // Shadowed shading (the ratio estimator): any sample plan, one or two lobes; the visibility

@@ -53,14 +53,16 @@ inline void write(const shading_results<T>& out, std::size_t i, const polygon_li
 
 }  // namespace detail
 
-/// shade_polygon_light with any LTC table (ltc/shading/table.hpp) in place of the GGX table:
-/// item i gets ltc::shade_polygon_light(frame, table.fetch(frame.cos_theta_v, roughness), ...)
-/// up to rounding (the same kernel; ltc/shading/batch_two_lobe.hpp runs it once per lobe).
-template <typename Policy = edge_policy::automatic, typename T>
-void shade_polygon_light_with_table(const ltc_table& table, const shading_points<T>& points,
-                                    const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
-                                    sidedness side, const shading_results<T>& out, std::size_t count,
-                                    isa which = isa::automatic) {
+namespace detail {
+
+/// The batch shading of one polygonal light with the sum of the LTCs of Lobes tables: the SIMD
+/// kernel (ltc/detail/batch_simd_shading.inc) for the full vectors of points, then
+/// scalar(frame, i) for the tail and for the points it hands back.
+template <typename Policy, int Lobes, typename T, typename Scalar>
+void shade_polygon_light_lobes(const ltc_table* const (&tables)[Lobes], const shading_points<T>& points,
+                               const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
+                               sidedness side, const shading_results<T>& out, std::size_t count, isa which,
+                               Scalar&& scalar) {
     using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     // The light's vertices by axis: on the stack for up to 16 vertices.
     constexpr std::size_t stack = 16;
@@ -70,21 +72,23 @@ void shade_polygon_light_with_table(const ltc_table& table, const shading_points
     if (n > stack) axis[0] = heap.data(), axis[1] = heap.data() + n, axis[2] = heap.data() + 2 * n;
     for (std::size_t k = 0; k < n; ++k)
         for (int c = 0; c < 3; ++c) axis[c][k] = vertices[k][c];
-    const detail::shading_light<T> light{axis[0], axis[1], axis[2], n, {radiance.x, radiance.y, radiance.z},
-                                         side == sidedness::two_sided};
+    const shading_light<T> light{axis[0], axis[1], axis[2], n, {radiance.x, radiance.y, radiance.z},
+                                 side == sidedness::two_sided};
     std::size_t vectorized = 0;
-    if constexpr (detail::simd_policy<EdgePolicy, T>) {
+    if constexpr (simd_policy<EdgePolicy, T>) {
 #if LTC_SIMD
         if (n >= 3) switch (resolve(which)) {
                 case isa::baseline:
-                    vectorized = detail::run_shade_baseline<EdgePolicy>(table, light, points, out, count);
+                    vectorized = run_shade_baseline<EdgePolicy, Lobes>(tables, light, points, out, count);
                     break;
 #if LTC_SIMD_AVX2
-                case isa::avx2: vectorized = detail::run_shade_avx2<EdgePolicy>(table, light, points, out, count); break;
+                case isa::avx2:
+                    vectorized = run_shade_avx2<EdgePolicy, Lobes>(tables, light, points, out, count);
+                    break;
 #endif
 #if LTC_SIMD_AVX512
                 case isa::avx512:
-                    vectorized = detail::run_shade_avx512<EdgePolicy>(table, light, points, out, count);
+                    vectorized = run_shade_avx512<EdgePolicy, Lobes>(tables, light, points, out, count);
                     break;
 #endif
                 default: break;
@@ -94,15 +98,30 @@ void shade_polygon_light_with_table(const ltc_table& table, const shading_points
     (void)which;
     for (std::size_t i = 0; i < count; ++i) {
         if (i < vectorized && !std::isnan(out.specular[0][i])) continue;
-        const glm::vec<3, T> P(points.px[i], points.py[i], points.pz[i]), N(points.nx[i], points.ny[i], points.nz[i]);
-        const glm::vec<3, T> V(points.vx[i], points.vy[i], points.vz[i]);
-        // What the roughness overload of ltc::shade_polygon_light does, with `table`.
-        const shading_frame<T> frame = make_shading_frame(N, V);
-        detail::write(out, i,
-                      ltc::shade_polygon_light<Policy>(frame, table.fetch(frame.cos_theta_v, points.roughness[i]), P,
-                                                       detail::item(points.f0, i), detail::item(points.albedo, i),
-                                                       radiance, vertices, n, side));
+        const glm::vec<3, T> N(points.nx[i], points.ny[i], points.nz[i]), V(points.vx[i], points.vy[i], points.vz[i]);
+        write(out, i, scalar(make_shading_frame(N, V), i));
     }
+}
+
+}  // namespace detail
+
+/// shade_polygon_light with any LTC table (ltc/shading/table.hpp) in place of the GGX table:
+/// item i gets ltc::shade_polygon_light(frame, table.fetch(frame.cos_theta_v, roughness), ...)
+/// up to rounding (the same kernel).
+template <typename Policy = edge_policy::automatic, typename T>
+void shade_polygon_light_with_table(const ltc_table& table, const shading_points<T>& points,
+                                    const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
+                                    sidedness side, const shading_results<T>& out, std::size_t count,
+                                    isa which = isa::automatic) {
+    const ltc_table* const tables[1] = {&table};
+    // The scalar path: what the roughness overload of ltc::shade_polygon_light does, with `table`.
+    const auto scalar = [&](const shading_frame<T>& frame, std::size_t i) {
+        const glm::vec<3, T> P(points.px[i], points.py[i], points.pz[i]);
+        return ltc::shade_polygon_light<Policy>(frame, table.fetch(frame.cos_theta_v, points.roughness[i]), P,
+                                                detail::item(points.f0, i), detail::item(points.albedo, i), radiance,
+                                                vertices, n, side);
+    };
+    detail::shade_polygon_light_lobes<Policy, 1>(tables, points, radiance, vertices, n, side, out, count, which, scalar);
 }
 
 /// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)

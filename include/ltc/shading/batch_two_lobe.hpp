@@ -5,22 +5,21 @@
 //   ltc::batch::shade_quad_lights_two_lobe(P, N, V, roughness, F0, albedo, lights, ltc::sidedness::one_sided, res, count);
 //
 // Item i gets what ltc::shade_polygon_light_two_lobe gives for it with horizon_clipping::ltc_space,
-// up to rounding: the SIMD kernel of ltc/shading/batch_shading.hpp runs once per lobe table
-// (ltc::ggx_two_lobe::lobe_table; batch::shade_polygon_light_with_table), the first pass writing
-// the diffuse term and lobe 1's specular term, the second adding lobe 2's. The second pass also
-// computes a form factor that it drops, so this costs about twice the one-lobe batch
-// (benchmarks/bench_shading.cpp); its points go through in chunks of 256 with their results on
-// the stack. The tolerance of each pass against the scalar shading with the same table is the
-// one-lobe batch's (tests/test_batch_shading.cpp). shade_quad_lights_two_lobe: one point and many
-// quad lights, as batch::shade_quad_lights, with one more LTC integral per light for lobe 2.
+// up to rounding: the SIMD kernel of ltc/shading/batch_shading.hpp with both lobe tables
+// (ltc::ggx_two_lobe::lobe_table) in one pass: one frame and one form factor per point, an LTC
+// integral per lobe (benchmarks/bench_shading.cpp: the cost against the one-lobe batch). Points
+// the kernel hands back, and the tail, get ltc::shade_polygon_light_two_lobe itself. The tolerance
+// against the scalar shading with the kernel's coefficients is the sum of the one-lobe batch's for
+// each lobe (tests/test_batch_shading.cpp). shade_quad_lights_two_lobe: one point and many quad
+// lights, as batch::shade_quad_lights, with one more LTC integral per light for lobe 2.
 #pragma once
 
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <glm/glm.hpp>
 
-#include <algorithm>
 #include <cstddef>
 
 namespace ltc {
@@ -32,24 +31,15 @@ template <typename Policy = edge_policy::automatic, typename T>
 void shade_polygon_light_two_lobe(const shading_points<T>& points, const glm::vec<3, T>& radiance,
                                   const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
                                   const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {
-    shade_polygon_light_with_table<Policy>(ggx_two_lobe::lobe_table(0), points, radiance, vertices, n, side, out, count,
-                                           which);
-    constexpr std::size_t chunk = 256;
-    T scratch[6][chunk];
-    for (std::size_t begin = 0; begin < count; begin += chunk) {
-        const std::size_t m = std::min(chunk, count - begin);
-        shading_points<T> part = points;
-        for (const T** column : {&part.px, &part.py, &part.pz, &part.nx, &part.ny, &part.nz, &part.vx, &part.vy, &part.vz,
-                                 &part.roughness, &part.f0[0], &part.f0[1], &part.f0[2], &part.albedo[0],
-                                 &part.albedo[1], &part.albedo[2]})
-            *column += begin;
-        shading_results<T> second;
-        for (int c = 0; c < 3; ++c) second.specular[c] = scratch[c], second.diffuse[c] = scratch[3 + c];
-        shade_polygon_light_with_table<Policy>(ggx_two_lobe::lobe_table(1), part, radiance, vertices, n, side, second, m,
-                                               which);
-        for (int c = 0; c < 3; ++c)
-            for (std::size_t i = 0; i < m; ++i) out.specular[c][begin + i] += scratch[c][i];
-    }
+    const ltc_table lobe_1 = ggx_two_lobe::lobe_table(0), lobe_2 = ggx_two_lobe::lobe_table(1);
+    const ltc_table* const tables[2] = {&lobe_1, &lobe_2};
+    const auto scalar = [&](const shading_frame<T>& frame, std::size_t i) {
+        const glm::vec<3, T> P(points.px[i], points.py[i], points.pz[i]);
+        return ltc::shade_polygon_light_two_lobe<Policy>(
+            frame, ggx_two_lobe::fetch<T>(frame.cos_theta_v, points.roughness[i]), P, detail::item(points.f0, i),
+            detail::item(points.albedo, i), radiance, vertices, n, side);
+    };
+    detail::shade_polygon_light_lobes<Policy, 2>(tables, points, radiance, vertices, n, side, out, count, which, scalar);
 }
 
 /// shade_quad_lights with the two-lobe GGX table: one point, count quad lights, light i's
