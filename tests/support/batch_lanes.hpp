@@ -91,14 +91,4 @@ std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shad
 #endif
 }
 
-/// shading_kernel with one table.
-template <typename Policy>
-std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
-                           const ltc::batch::shading_points<float>& points,
-                           const ltc::batch::shading_results<float>& out, std::size_t count,
-                           const ltc::ltc_table& table = ltc::ggx::table) {
-    const ltc::ltc_table* const tables[1] = {&table};
-    return shading_kernel<Policy, 1>(which, light, points, out, count, tables);
-}
-
 }  // namespace ltc_test

@@ -135,10 +135,9 @@ struct minimax_rational : detail::symmetric_fit<minimax_rational> {
 /// 2 asin(sqrt(y / 2)) so that the reference is accurate near y = 0; with the coefficients rounded
 /// to double, within 2e-17 of f in exact arithmetic), extended to c < 0 by f(c) = pi / s - f(-c):
 /// accurate to double rounding (5.0 u measured, 15 u derived, against 2.7 u for atan2 / s:
-/// tests/test_edge_policies.cpp) without
-/// atan2, and for c >= 0 without a square root or a division. In float it is no better than
-/// `polynomial`. The two-lobe fit's objective uses it (ltc/fitting/fit_two_lobes.hpp), where
-/// atan2 took 26% of the time.
+/// tests/test_edge_policies.cpp) without atan2, and for c >= 0 without a square root or a
+/// division. In float it is no better than `polynomial`. The two-lobe fit's objective uses it
+/// (ltc/fitting/fit_two_lobes.hpp), where atan2 took 26% of the time.
 struct polynomial_double : detail::symmetric_fit<polynomial_double> {
     template <typename V>
     LTC_HOST_DEVICE LTC_INLINE static void evaluate_positive_branch(const V& y, V& f) {

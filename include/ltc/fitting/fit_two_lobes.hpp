@@ -153,9 +153,9 @@ nelder_mead_result<9> minimize_padded(const F& objective, const std::array<doubl
 /// (ltc/core/edge_policy.hpp) instead of atan2, which took 26% of the fit's time. Measured with
 /// ltc_fit --lobes 2: the fit takes 0.79x the time, and the table's bits change at one node of
 /// 1024 (a single-lobe node, roughness 0.065 at the grazing limit, by up to 1.3%), the error
-/// report's figures not at all. The float-accurate minimax_rational saves more (21 instead of 29 us per
-/// evaluation at atan2), but perturbing the objective by 4e-8 moves nearly every node within
-/// Nelder-Mead's tolerance, and the table came out worse (examples/ggx_error_report: 2.81%
+/// report's figures not at all. The float-accurate minimax_rational saves more (21 instead of
+/// 29 us per evaluation at atan2), but perturbing the objective by 4e-8 moves nearly every node
+/// within Nelder-Mead's tolerance, and the table came out worse (examples/ggx_error_report: 2.81%
 /// against 2.59% on the report's grid, 5.45% against 5.12% off it).
 using objective_edge_policy = edge_policy::polynomial_double;
 

@@ -47,8 +47,8 @@
 // opt-in two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the ratio then corrects a
 // closer unshadowed result (the shadows example: RMS bias against the path-traced truth 10.4%
 // with one lobe, 4.7% with two, at K = 16), at the cost of its second lobe's integral; the
-// samples then follow its first lobe (sampling the two lobes' mixture was measured slower at
-// equal error: README, shadows section).
+// samples then follow its first lobe (sampling the two lobes' mixture measured worse at equal
+// CPU time: README, shadows section).
 //
 // Outputs: `unshadowed` (= shade_polygon_light or shade_polygon_light_two_lobe, horizon clipping
 // ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
