@@ -4,6 +4,8 @@
 // ltc::batch::shade_polygon_light (one point per SIMD lane); and one point shaded by 4096 quad
 // lights (ltc::batch::shade_quad_lights); and ltc::shade_polygon_light_two_lobe point by point and
 // ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table: their costs against the
+// one-lobe ones), and ltc::shade_polygon_light_cosine_lobe point by point (the opt-in table of an
+// LTC and the cosine: its cost against
 // one-lobe ones, no error counters since it is another approximation). Items/s plus, as counters, the maximum absolute and
 // relative error of specular + diffuse (red) against ltc::shade_polygon_light in double with the
 // exact edge policy: the precision each float path loses, not the LTC approximation's own error.
@@ -20,6 +22,7 @@
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -128,15 +131,23 @@ void BM_library_scalar(benchmark::State& state) {
     report_errors(state, red);
 }
 
-template <typename Policy>
-void BM_library_scalar_two_lobe(benchmark::State& state) {
+// The opt-in tables point by point: Cosine false, shade_polygon_light_two_lobe (two LTC
+// integrals); true, shade_polygon_light_cosine_lobe (one LTC integral and the form factor, as
+// BM_library_scalar, and a second table fetch). Throughput only.
+template <typename Policy, bool Cosine>
+void BM_library_scalar_opt_in(benchmark::State& state) {
     const scene& s = the_scene();
     std::vector<float> red(kItems);
     for (auto _ : state) {
         for (std::size_t i = 0; i < kItems; ++i) {
-            const auto r = ltc::shade_polygon_light_two_lobe<Policy>(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i],
-                                                                     s.vec(10, i), s.vec(13, i), s.radiance, s.light, 4,
-                                                                     ltc::sidedness::two_sided);
+            const auto shade = [&](const auto&... a) {
+                if constexpr (Cosine)
+                    return ltc::shade_polygon_light_cosine_lobe<Policy>(a...);
+                else
+                    return ltc::shade_polygon_light_two_lobe<Policy>(a...);
+            };
+            const auto r = shade(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i), s.radiance,
+                                 s.light, std::size_t(4), ltc::sidedness::two_sided);
             red[i] = r.specular.x + r.diffuse.x;
         }
         benchmark::DoNotOptimize(red.data());
@@ -144,6 +155,10 @@ void BM_library_scalar_two_lobe(benchmark::State& state) {
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
 }
+template <typename Policy>
+void BM_library_scalar_two_lobe(benchmark::State& state) { BM_library_scalar_opt_in<Policy, false>(state); }
+template <typename Policy>
+void BM_library_scalar_cosine_lobe(benchmark::State& state) { BM_library_scalar_opt_in<Policy, true>(state); }
 
 struct outputs {
     std::vector<float> c[6];
@@ -237,6 +252,8 @@ BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library_scalar, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_library_scalar_two_lobe, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library_scalar_two_lobe, ltc::edge_policy::minimax_rational);
+BENCHMARK_TEMPLATE(BM_library_scalar_cosine_lobe, ltc::edge_policy::exact);
+BENCHMARK_TEMPLATE(BM_library_scalar_cosine_lobe, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);

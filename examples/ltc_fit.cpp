@@ -34,7 +34,7 @@
 namespace {
 
 const char* const usage_text =
-    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--objective O] [--lobes 1|2] [--threads K] [--quiet]\n"
+    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--objective O] [--lobes 1|2|cosine] [--threads K] [--quiet]\n"
     "\n"
     "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
     "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
@@ -50,6 +50,9 @@ const char* const usage_text =
     "  --lobes 2      a sum of two LTCs per node (ltc/fitting/fit_two_lobes.hpp; writes\n"
     "                 ltc::tables::<brdf>_two_lobe_size and _data, two such tables; --objective\n"
     "                 does not apply)\n"
+    "  --lobes cosine one LTC and the clamped cosine about the normal per node (the model\n"
+    "                 ltc_and_cosine of fit_two_lobes.hpp; writes <brdf>_cosine_lobe_size and\n"
+    "                 _data, the two-lobe layout with lobe 1 the cosine; default size 32)\n"
     "  --threads K    worker threads (default: all cores); the output does not depend on it\n"
     "  --quiet        no progress bar (it is only drawn when standard error is a terminal)\n"
     "  --help         this text\n"
@@ -59,13 +62,15 @@ const char* const usage_text =
     "\n"
     "Regenerate the shipped table:\n"
     "  ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp\n"
-    "  ltc_fit --brdf ggx --lobes 2 --out include/ltc/tables/ggx_two_lobe.hpp\n";
+    "  ltc_fit --brdf ggx --lobes 2 --out include/ltc/tables/ggx_two_lobe.hpp\n"
+    "  ltc_fit --brdf ggx --lobes cosine --out include/ltc/tables/ggx_cosine_lobe.hpp\n";
 
 struct arguments {
     std::string brdf;
     std::string out;
     int size = 0;  // 0: the default of the lobe count
     int lobes = 1;
+    ltc::fit::two_lobe_model model = ltc::fit::two_lobe_model::two_ltcs;  // with lobes = 2
     ltc::fit::objective goal = ltc::fit::objective::l3;
     bool fit_magnitude = false;
     unsigned threads = 0;
@@ -122,7 +127,9 @@ arguments parse(int argc, char** argv) {
             else if (base == "combined") a.goal = ltc::fit::objective::combined;
             else fail("unknown objective '" + o + "' (l3, integrals, combined, integrals+mag, combined+mag)");
         } else if (arg == "--lobes") {
-            a.lobes = int(parse_integer(arg, next(), 1, 2));
+            const std::string l = next();
+            if (l == "cosine") a.lobes = 2, a.model = ltc::fit::two_lobe_model::ltc_and_cosine;
+            else a.lobes = int(parse_integer(arg, l, 1, 2));
         } else if (arg == "--threads" || arg == "-j") {
             a.threads = unsigned(parse_integer(arg, next(), 1, 4096));
         } else if (arg == "--quiet" || arg == "-q") {
@@ -134,7 +141,7 @@ arguments parse(int argc, char** argv) {
     if (a.brdf.empty()) fail("--brdf is required");
     if (a.brdf != "ggx" && a.brdf != "beckmann") fail("unknown BRDF '" + a.brdf + "' (ggx or beckmann)");
     if (a.out.empty()) fail("--out is required");
-    if (a.lobes == 2 && a.goal != ltc::fit::objective::l3) fail("--objective does not apply to --lobes 2");
+    if (a.lobes == 2 && a.goal != ltc::fit::objective::l3) fail("--objective does not apply to --lobes 2 or cosine");
     if (a.size == 0) a.size = a.lobes == 2 ? ltc::fit::two_lobe_default_size : ltc::fit::options{}.size;
     return a;
 }
@@ -194,12 +201,14 @@ int run(const arguments& args, const char* description) {
     const bool draw = !args.quiet && LTC_FIT_ISATTY(2);
     progress_bar bar(draw);
     if (args.lobes == 2) {
-        const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(opt);
+        const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(opt, args.model);
         const double seconds = bar.seconds();
-        if (!write_text(args.out, ltc::fit::two_lobe_table_header_text(args.brdf, description, tab, opt))) return 1;
+        if (!write_text(args.out, ltc::fit::two_lobe_table_header_text(args.brdf, description, tab, opt, args.model)))
+            return 1;
         const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-        std::fprintf(args.out == "-" ? stderr : stdout, "ltc_fit: %s, two lobes, %d x %d nodes in %.2f s on %u thread%s%s%s\n",
-                     args.brdf.c_str(), tab.size, tab.size, seconds, threads, threads == 1 ? "" : "s",
+        std::fprintf(args.out == "-" ? stderr : stdout, "ltc_fit: %s, %s, %d x %d nodes in %.2f s on %u thread%s%s%s\n",
+                     args.brdf.c_str(), args.model == ltc::fit::two_lobe_model::ltc_and_cosine ? "an LTC and the cosine" : "two lobes",
+                     tab.size, tab.size, seconds, threads, threads == 1 ? "" : "s",
                      args.out == "-" ? "" : "; wrote ", args.out == "-" ? "" : args.out.c_str());
         return 0;
     }

@@ -6,7 +6,9 @@
 // that a fitted magnitude does not change the set). Also two-lobe rows (issue 16): the shipped
 // two-lobe table (ltc/shading/ggx_two_lobe_fetch.hpp), its fit timed here ("two-lobe-fit"), and
 // "cells": per (theta_v, roughness) cell, the one- and two-lobe fits at the cell's exact view
-// and roughness (no table: what any table resolution or spacing could reach at best).
+// and roughness (no table: what any table resolution or spacing could reach at best). And the
+// opt-in table of an LTC and the clamped cosine (ltc/shading/ggx_cosine_lobe_fetch.hpp), its fit
+// timed here ("cosine-lobe-fit"), and its per-cell fits ("cells, LTC+cosine").
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "report.hpp"
@@ -15,6 +17,7 @@
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/fitting/fit_two_lobes.hpp>
+#include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
 #include <ltc/shading/table.hpp>
@@ -87,9 +90,10 @@ evaluation oracle(const std::vector<config>& grid, const evaluation& ev) {
 
 /// Per (theta_v, roughness) cell of the grid, fits at the cell's exact view and roughness (no
 /// table, no interpolation): the one-lobe L3 fit (marched from normal incidence as fit_table does)
-/// and the two-lobe fit started from it. lobes = 1 or 2.
+/// and the two-lobe fit started from it. lobes = 1 or 2; with `model` ltc_and_cosine, lobe 1 is the
+/// cosine and the LTC starts from the one-lobe fit (start_with_cosine).
 evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int lobes, double& seconds,
-                     bool refit_first = true) {
+                     bool refit_first = true, ltc::fit::two_lobe_model model = ltc::fit::two_lobe_model::two_ltcs) {
     evaluation e = ev;
     const auto t0 = std::chrono::steady_clock::now();
     ltc::fit::options fo;
@@ -111,7 +115,10 @@ evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int 
             lobe[0].magnitude = node.magnitude;
             lobe[1].magnitude = 0;
             if (lobes == 2) {
-                const auto two = ltc::fit::fit_two_lobes<ltc::brdf::ggx>(c, alpha, ltc::fit::start_from_one_lobe(node.parameters), fo, refit_first);
+                const ltc::fit::two_lobe_start st = model == ltc::fit::two_lobe_model::ltc_and_cosine
+                                                        ? ltc::fit::start_with_cosine(node.parameters)
+                                                        : ltc::fit::start_from_one_lobe(node.parameters);
+                const auto two = ltc::fit::fit_two_lobes<ltc::brdf::ggx>(c, alpha, st, fo, refit_first);
                 for (int l = 0; l < 2; ++l) lobe[std::size_t(l)].m_inv = two.m_inv[std::size_t(l)];
                 lobe[0].magnitude = two.magnitude * (1 - two.share);
                 lobe[1].magnitude = two.magnitude * two.share;
@@ -162,6 +169,8 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
     print_row("oracle (bound)", "-", grid, oracle(grid, ev));
     print_row("two-lobe table", "-", grid,
               evaluate_two_lobes(grid, ev, ltc::ggx_two_lobe::lobe_table(0), ltc::ggx_two_lobe::lobe_table(1)));
+    print_row("LTC+cosine table", "-", grid,
+              evaluate_two_lobes(grid, ev, ltc::ggx_cosine_lobe::lobe_table(0), ltc::ggx_cosine_lobe::lobe_table(1)));
     for (const std::string& name : objectives) {
         if (name == "cells") {
             double secs = 0;
@@ -175,18 +184,25 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
             const evaluation e3 = cell_fits(grid, ev, 2, secs, false);
             std::snprintf(time, sizeof time, "%.2fs", secs);
             print_row("cells, lobe 1 L3", time, grid, e3);
+            const evaluation e4 = cell_fits(grid, ev, 2, secs, true, ltc::fit::two_lobe_model::ltc_and_cosine);
+            std::snprintf(time, sizeof time, "%.2fs", secs);
+            print_row("cells, LTC+cos", time, grid, e4);
             continue;
         }
-        if (name == "two-lobe-fit") {  // the shipped two-lobe table's fit, timed here
+        if (name == "two-lobe-fit" || name == "cosine-lobe-fit") {  // a shipped two-lobe table's fit, timed here
+            const bool cosine = name == "cosine-lobe-fit";
             ltc::fit::options fo;
             fo.size = ltc::fit::two_lobe_default_size;
             fo.threads = threads;
             const auto t0 = std::chrono::steady_clock::now();
-            const std::vector<float> data = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(fo).packed();
+            const std::vector<float> data =
+                ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(fo, cosine ? ltc::fit::two_lobe_model::ltc_and_cosine
+                                                                        : ltc::fit::two_lobe_model::two_ltcs)
+                    .packed();
             char time[32];
             std::snprintf(time, sizeof time, "%.2fs", seconds_since(t0));
             const ltc::ltc_table lobe1(data.data(), fo.size, fo.size), lobe2(data.data() + data.size() / 2, fo.size, fo.size);
-            print_row("two lobes, 32x32", time, grid, evaluate_two_lobes(grid, ev, lobe1, lobe2));
+            print_row(cosine ? "LTC+cosine, 32x32" : "two lobes, 32x32", time, grid, evaluate_two_lobes(grid, ev, lobe1, lobe2));
             continue;
         }
         ltc::fit::options fo;

@@ -91,9 +91,9 @@ inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vect
     }
 
     if (t.lobes != 1)
-        std::printf("LTC render, batch: left out with --lobes %d (ltc::batch::shade_polygon_light has the one-lobe "
+        std::printf("LTC render, batch: left out with%s (ltc::batch::shade_polygon_light has the one-lobe "
                     "table only)\n",
-                    t.lobes);
+                    lobes_option(t.lobes));
     else
         std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light: %.1fx "
                     "as fast;\n                                largest difference to the point-by-point render %.1e, "

@@ -2,7 +2,7 @@
 //
 //   render [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]
 //          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]
-//          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--lobes 1|2]
+//          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--lobes 1|2|cosine]
 //          [--shapes] [--help]
 //
 // The scene (z up): a tiled ground plane seen by a pinhole camera 2.8 units above it, lit by two
@@ -53,7 +53,9 @@
 //                  and the --shapes lights stay as they are (one lobe). The images keep their
 //                  names (run it with another --out to keep the default run's): ltc.png and
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png
-//                  do not change.
+//                  do not change. --lobes cosine likewise with ltc::shade_polygon_light_cosine_lobe:
+//                  the opt-in table of an LTC and the clamped cosine (one LTC integral, the
+//                  cosine's integral the form factor of the diffuse term; about 1.14x the cost).
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
 //                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
 //                  (BRDF sampling of visible normals + uniform spherical-polygon sampling, balance
@@ -223,6 +225,9 @@ int main(int argc, char** argv) {
                     2.0 * tex->half_height, opt.texture_radiance, prefilter_seconds, tex->prefiltered->level_count());
     if (opt.lobes == 2)
         std::printf("polygonal lights: the two-lobe GGX table (--lobes 2: ltc::shade_polygon_light_two_lobe)\n");
+    if (opt.lobes == 3)
+        std::printf("polygonal lights: the GGX table of an LTC and the cosine (--lobes cosine: "
+                    "ltc::shade_polygon_light_cosine_lobe)\n");
 
     // The textured light's LTC render by each method of --textured-method (one, or all three
     // with "all"); the first one's is the textured light of ltc.png, error.png and

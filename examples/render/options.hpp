@@ -23,7 +23,13 @@ inline const char* method_name(ltc::textured_method m) {
 
 /// " with two lobes" after "polygonal lights" where --lobes 2 shades them (the default run's lines
 /// are left as they were).
-inline const char* lobes_note(int lobes) { return lobes == 2 ? " with two lobes" : ""; }
+/// (" with an LTC and the cosine" for --lobes cosine, stored as lobes = 3).
+inline const char* lobes_note(int lobes) {
+    return lobes == 2 ? " with two lobes" : lobes == 3 ? " with an LTC and the cosine" : "";
+}
+
+/// The --lobes argument that gives `lobes` (" --lobes 2", " --lobes cosine"; "" for one lobe).
+inline const char* lobes_option(int lobes) { return lobes == 2 ? " --lobes 2" : lobes == 3 ? " --lobes cosine" : ""; }
 
 struct options : ltc_examples::image_options {  // --width, --height, --threads, --out, --seed, --exposure
     options() : image_options(256, 160) {}
@@ -37,7 +43,8 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::size_t cells = 64;  // --cells: exact_cells' budget (ltc::cell_budget::max_cells)
     bool shapes = false;     // --shapes: the disk, sphere and tube lights' section (shapes_render.hpp)
     // --lobes: the LTC table of the polygonal lights in ltc.png, 1 (ltc::shade_polygon_light) or 2
-    // (ltc::shade_polygon_light_two_lobe); the textured light and the --shapes lights keep one lobe.
+    // (ltc::shade_polygon_light_two_lobe) or 3 for --lobes cosine (ltc::shade_polygon_light_cosine_lobe);
+    // the textured light and the --shapes lights keep one lobe.
     int lobes = 1;
 };
 
@@ -45,7 +52,7 @@ inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp N] [--threads K] [--out DIR] [--exposure E]\n"
         "          [--seed S] [--texture FILE | --no-texture] [--texture-radiance R]\n"
-        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--lobes 1|2]\n"
+        "          [--textured-method fetch|quick_cells|exact_cells|all] [--cells N] [--lobes 1|2|cosine]\n"
         "          [--shapes] [--help]\n"
         "\n"
         "Renders a tiled floor (GGX dielectric, gold and copper; roughness 0.1 .. 0.9) lit by a\n"
@@ -115,7 +122,9 @@ inline void print_help(const char* argv0) {
         "                   stay as they are (one lobe). The images keep their names (give another\n"
         "                   --out to keep both runs'); the LTC time, error images and statistics are\n"
         "                   then those of the two-lobe render, and the batch timing is left out\n"
-        "                   (ltc::batch::shade_polygon_light has the one-lobe table only)\n"
+        "                   (ltc::batch::shade_polygon_light has the one-lobe table only). cosine:\n"
+        "                   the opt-in table of an LTC and the clamped cosine\n"
+        "                   (ltc::shade_polygon_light_cosine_lobe: one LTC integral, as one lobe)\n"
         "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"
         "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
         "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"
@@ -163,8 +172,9 @@ inline int parse_args(int argc, char** argv, options& o) {
             if (!v.integer_in(1, 1e7)) return option_status::bad;
             o.cells = static_cast<std::size_t>(v.number);
         } else if (a == "--lobes") {
-            if (!v.integer_in(1, 2)) return option_status::bad;
-            o.lobes = static_cast<int>(v.number);
+            if (std::string(v.text) == "cosine") o.lobes = 3;
+            else if (v.integer_in(1, 2)) o.lobes = static_cast<int>(v.number);
+            else return option_status::bad;
         } else if (a == "--texture-radiance") {
             if (!v.is_number || !(v.number >= 0) || v.number > 1e6) return option_status::bad;
             o.texture_radiance = v.number;

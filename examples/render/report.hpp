@@ -56,7 +56,7 @@ inline bool report_errors(const scene& s, const std::vector<pixel_hit>& hits, co
                 method_note.empty() ? "" : "; the textured light", method_note.c_str());
     print_error(s, all, floor);
     std::printf("\n=== the polygonal lights alone%s (rectangle + pentagon: the statistics of --no-texture%s) ===\n",
-                lobes_note(opt.lobes), opt.lobes == 1 ? "" : " --lobes 2");
+                lobes_note(opt.lobes), lobes_option(opt.lobes));
     print_error(s, poly_stats, floor);
     if (!compare) {
         std::printf("\n=== the textured light alone%s (its contribution to the floor: textured_error.png) ===\n",

@@ -13,6 +13,7 @@
 #include "scene.hpp"
 
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/textured_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
@@ -24,7 +25,8 @@ namespace render {
 
 /// One polygonal light at a floor point by LTC with `lobes` lobes (--lobes): 1, the GGX table
 /// (ltc::shade_polygon_light), or 2, the two-lobe table (ltc::shade_polygon_light_two_lobe,
-/// taking the same arguments).
+/// taking the same arguments), or 3, the table of an LTC and the cosine (--lobes cosine:
+/// ltc::shade_polygon_light_cosine_lobe).
 inline ltc::polygon_light_result<float> shade_ltc_light(const light& l, const material& m, const pixel_hit& hit,
                                                         int lobes) {
     const auto shade_with = [&](const auto& shading_function) {
@@ -32,6 +34,7 @@ inline ltc::polygon_light_result<float> shade_ltc_light(const light& l, const ma
                                 l.vertices.data(), l.vertices.size(), ltc::sidedness::one_sided);
     };
     // The two are overload sets of templates: each wrapped in a lambda to be passed as a value.
+    if (lobes == 3) return shade_with([](const auto&... a) { return ltc::shade_polygon_light_cosine_lobe(a...); });
     return lobes == 2 ? shade_with([](const auto&... a) { return ltc::shade_polygon_light_two_lobe(a...); })
                       : shade_with([](const auto&... a) { return ltc::shade_polygon_light(a...); });
 }

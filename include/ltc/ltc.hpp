@@ -39,6 +39,7 @@
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/clipless.hpp>
 #include <ltc/shading/cell_pyramid.hpp>
 #include <ltc/shading/light_texture.hpp>

@@ -24,6 +24,7 @@
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -102,6 +103,10 @@ void run(FuzzedDataProvider& in) {
                                                           ltc::sidedness::two_sided, clip);
         require_finite(r2.specular, "two-lobe GGX specular");
         require_finite(r2.diffuse, "two-lobe GGX diffuse");
+        const auto r3 = ltc::shade_polygon_light_cosine_lobe(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv,
+                                                             n, ltc::sidedness::two_sided, clip);
+        require_finite(r3.specular, "LTC and cosine GGX specular");
+        require_finite(r3.diffuse, "LTC and cosine GGX diffuse");
     }
 
     // The same point in the batch shading, one and two lobes, with every instruction set: 17 items

@@ -22,6 +22,16 @@
 // (detail::fit_two_lobes_guarded): each fixed a failure of the table between the nodes of the
 // report's grid (near-mirror reflections missed by up to 100%, mirror lights at roughness
 // 0.15-0.18 by up to 41%: tests/test_two_lobe.cpp; examples/ggx_error_report --grid off).
+// The model `ltc_and_cosine` keeps lobe 1 fixed at the clamped cosine about the normal (M_1 = I):
+//
+//   f = rho cos ~= magnitude * ((1 - s) D_cos + s D_M),
+//
+// whose integral over a polygon is the form factor, which the shading computes anyway for the
+// diffuse term: one LTC's cost, with a share of GGX's lobe moved to the broad part that a single
+// LTC cannot follow (ltc/shading/cosine_lobe_polygon_light.hpp). The same objective fits D_M and
+// s (5 numbers), each node from its own one-lobe fit with s = 0.9 (marching the two-lobe fit along
+// the rows, as the two-LTC table does, measured 5.98% instead of 5.14% on the report's grid:
+// starts caught in a minimum where the cosine takes all, carried along a row).
 // Caveat (ggx_error_report, section 8): the fit stays fragile where the lobes' parts are not
 // settled (roughness 0.2-0.25 at grazing views), since nodes are marched from their neighbours
 // and a table interpolates lobe by lobe; variants of the objective's evaluation, of the starts, of
@@ -161,9 +171,14 @@ using objective_edge_policy = edge_policy::polynomial_double;
 
 /// Where a two-lobe fit starts: both lobes (their axes are replaced by the node's average
 /// direction) and the second lobe's share.
+/// What the two lobes are: two free LTCs, or lobe 1 fixed at the clamped cosine about the normal
+/// (M_1 = I, its integral the form factor) and lobe 2 a free LTC.
+enum class two_lobe_model { two_ltcs, ltc_and_cosine };
+
 struct two_lobe_start {
     std::array<ltc_parameters, 2> lobes;
     double share = 0.2;
+    two_lobe_model model = two_lobe_model::two_ltcs;  ///< ltc_and_cosine: lobes[0] is ignored (the cosine)
 };
 
 /// The start from a one-lobe fit (fit_node): lobe 1 as fitted, lobe 2 twice as wide, share 0.2.
@@ -174,6 +189,15 @@ inline two_lobe_start start_from_one_lobe(const ltc_parameters& one) {
     s.lobes[1].m11 *= 2.0;
     s.lobes[1].m22 *= 2.0;
     s.lobes[1].m13 *= 2.0;
+    return s;
+}
+
+/// The start of the ltc_and_cosine model from a one-lobe fit: lobe 2 as fitted, share 0.9.
+inline two_lobe_start start_with_cosine(const ltc_parameters& one) {
+    two_lobe_start s;
+    s.lobes[1] = one;
+    s.share = 0.9;
+    s.model = two_lobe_model::ltc_and_cosine;
     return s;
 }
 
@@ -188,7 +212,8 @@ inline two_lobe_start start_from(const two_lobe_result& r) {
 /// Fits the two-lobe node of view cos(theta_v) and roughness alpha from `start`; with
 /// `refit_first` false, lobe 1 stays as in `start` and only lobe 2 and the share are fitted
 /// (5 numbers; measured by examples/ggx_error_report, "cells, lobe 1 L3": 6.17% mean error
-/// against 2.22% with both lobes fitted, so the tables refit both).
+/// against 2.22% with both lobes fitted, so the tables refit both). With start.model
+/// ltc_and_cosine, lobe 1 is the cosine and stays fixed whatever `refit_first` says.
 template <template <typename> class Brdf>
 two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_start& start, const options& opt,
                               bool refit_first = true) {
@@ -207,6 +232,8 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
         if (isotropic) p.m22 = p.m11, p.m13 = p.m31 = 0;
     }
     r.share = std::min(std::max(start.share, 1e-6), 1 - 1e-6);
+    const bool with_cosine = start.model == two_lobe_model::ltc_and_cosine;
+    if (with_cosine) r.lobes[0] = ltc_parameters{}, refit_first = false;  // M_1 = I, about the normal
 
     const integral_targets targets = make_integral_targets<Brdf>(V, alpha, axis, mom.magnitude);
     std::vector<double> i1(targets.polygons.size()), i2(targets.polygons.size());
@@ -295,9 +322,11 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     // then sees a noisy objective, and Nelder-Mead stopped on its first simplex along whole rows
     // (roughness 0.16 at grazing views: lobe 1 frozen, +56% on a mirror light). A table also
     // interpolates a spike's matrix into its neighbours (examples/ggx_error_report --grid off).
+    // With the cosine as lobe 1, only the LTC can drift; a dead LTC becomes the cosine (the node
+    // all cosine), and the cosine, fixed, stays whatever its share.
     constexpr double dead = 1e-3;
     if (r.share < dead) r.lobes[1] = r.lobes[0], r.share = 0;
-    if (r.share > 1 - dead) r.lobes[0] = r.lobes[1], r.share = 1;
+    if (r.share > 1 - dead && !with_cosine) r.lobes[0] = r.lobes[1], r.share = 1;
     for (int l = 0; l < 2; ++l) r.m_inv[std::size_t(l)] = normalized_inverse(r.lobes[std::size_t(l)].matrix());
     return r;
 }
@@ -361,9 +390,9 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
     two_lobe_result r = fit_two_lobes<Brdf>(cos_theta, alpha, start, opt);
     if (r.value <= implausible || (along_row && !r.stalled && std::isfinite(r.value))) return r;
     const ltc_parameters lobe = one();
-    two_lobe_start single;
+    two_lobe_start single = start;
     single.lobes = {lobe, lobe};
-    single.share = 0;
+    single.share = start.model == two_lobe_model::ltc_and_cosine ? 1.0 : 0.0;  // the LTC alone
     two_lobe_result again = fit_two_lobes<Brdf>(cos_theta, alpha, single, opt);
     const int evaluations = r.evaluations + again.evaluations;
     two_lobe_result& kept = again.value < r.value ? again : r;
@@ -380,9 +409,10 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
 /// does not depend on it). The chain runs on the calling thread while the others take the rows in
 /// the chain's order, each as soon as its first node is fitted. That order also puts the cheap rows
 /// last (roughness below 0.2: 0.25 s each on one thread, against 0.75 s for the others), so that
-/// the threads finish together.
+/// the threads finish together. With the ltc_and_cosine model, every node starts from its own
+/// one-lobe fit (start_with_cosine) instead of its neighbour's two-lobe fit.
 template <template <typename> class Brdf>
-two_lobe_table fit_two_lobe_table(const options& opt) {
+two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two_lobe_model::two_ltcs) {
     if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_two_lobe_table: size must be at least 2");
     const int n = opt.size;
     two_lobe_table tab;
@@ -390,6 +420,7 @@ two_lobe_table fit_two_lobe_table(const options& opt) {
     tab.nodes.resize(std::size_t(n) * std::size_t(n));
     const double c0 = node_cos_theta(0, n, opt.cos_theta_min);
     const std::vector<node_result> one0 = fit_normal_incidence<Brdf>(opt);  // the one-lobe fits, for starts
+    const bool with_cosine = model == two_lobe_model::ltc_and_cosine;
 
     std::mutex mutex;
     std::condition_variable chain_advanced;
@@ -419,8 +450,9 @@ two_lobe_table fit_two_lobe_table(const options& opt) {
                 }
                 return one_lobe.parameters;
             };
-            row[t] = detail::fit_two_lobes_guarded<Brdf>(node_cos_theta(t, n, opt.cos_theta_min), alpha,
-                                                         start_from(row[t - 1]), opt, true, one);
+            const two_lobe_start start = with_cosine ? start_with_cosine(one()) : start_from(row[t - 1]);
+            row[t] = detail::fit_two_lobes_guarded<Brdf>(node_cos_theta(t, n, opt.cos_theta_min), alpha, start, opt,
+                                                         true, one);
         }
     };
     const auto worker = [&] {
@@ -445,6 +477,7 @@ two_lobe_table fit_two_lobe_table(const options& opt) {
         for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
         two_lobe_start start = start_from_one_lobe(one0[std::size_t(n - 1)].parameters);
         for (int a = n - 1; a >= 0; --a) {
+            if (with_cosine) start = start_with_cosine(one0[std::size_t(a)].parameters);
             two_lobe_result& node = tab.nodes[std::size_t(a) * std::size_t(n)];
             node = detail::fit_two_lobes_guarded<Brdf>(c0, node_alpha(a, n, opt.alpha_min), start, opt, false,
                                                        [&] { return one0[std::size_t(a)].parameters; });

@@ -30,8 +30,7 @@ inline constexpr int size = tables::ggx_two_lobe_size;
 
 /// Lobe l's table (l = 0, 1) as an ltc_table view (e.g. to upload both as textures).
 inline constexpr ltc_table lobe_table(int l) {
-    return ltc_table(tables::ggx_two_lobe_data + (l == 0 ? 0 : std::size_t(size) * std::size_t(size) * channel::count),
-                     size, size);
+    return two_lobe_layout_table(tables::ggx_two_lobe_data, size, l);
 }
 
 /// Both lobes' coefficients for the view angle cos(theta_v) and the roughness (alpha =

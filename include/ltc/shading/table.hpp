@@ -180,4 +180,10 @@ class ltc_table {
     int height_;
 };
 
+/// Lobe l (0 or 1) of the data of a table of the two-lobe layout (ltc/tables/ggx_two_lobe.hpp,
+/// ggx_cosine_lobe.hpp: two square size x size tables, lobe 1's then lobe 2's).
+inline constexpr ltc_table two_lobe_layout_table(const float* data, int size, int l) {
+    return ltc_table(data + (l == 0 ? 0 : std::size_t(size) * std::size_t(size) * channel::count), size, size);
+}
+
 }  // namespace ltc

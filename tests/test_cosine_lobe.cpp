@@ -1,0 +1,176 @@
+// The opt-in GGX table of one LTC plus the clamped cosine (ltc/shading/ggx_cosine_lobe_fetch.hpp)
+// and its shading (ltc/shading/cosine_lobe_polygon_light.hpp): the table's entries, the shading's
+// identities with the generic two-lobe shading (the cosine's integral is the form factor), bad
+// input, the fit's independence of the thread count, and the table against the Monte Carlo GGX
+// ground truth where the one-lobe table is weakest.
+#include <catch2/catch.hpp>
+
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/fit_two_lobes.hpp>
+#include <ltc/reference/ground_truth.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
+#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/two_lobe_polygon_light.hpp>
+
+#include "support/shading_scenes.hpp"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle
+
+TEST_CASE("cosine-lobe table: the cosine's identity matrix, finite entries, invertible LTCs", "[cosine_lobe]") {
+    const int n = ltc::ggx_cosine_lobe::size;
+    REQUIRE(n == ltc::fit::two_lobe_default_size);
+    const ltc::ltc_table cosine = ltc::ggx_cosine_lobe::lobe_table(0), lobe = ltc::ggx_cosine_lobe::lobe_table(1);
+    int all_ltc = 0;
+    for (int a = 0; a < n; ++a)
+        for (int u = 0; u < n; ++u) {
+            CAPTURE(a, u);
+            CHECK(cosine.node(u, a, ltc::channel::m_inv_00) == 1);
+            CHECK(cosine.node(u, a, ltc::channel::m_inv_02) == 0);
+            CHECK(cosine.node(u, a, ltc::channel::m_inv_20) == 0);
+            CHECK(cosine.node(u, a, ltc::channel::m_inv_22) == 1);
+            glm::dmat3 m(0.0);
+            m[0][0] = lobe.node(u, a, ltc::channel::m_inv_00);
+            m[0][2] = lobe.node(u, a, ltc::channel::m_inv_02);
+            m[2][0] = lobe.node(u, a, ltc::channel::m_inv_20);
+            m[2][2] = lobe.node(u, a, ltc::channel::m_inv_22);
+            m[1][1] = 1;
+            const double det = glm::determinant(m);
+            CHECK(std::isfinite(det));
+            CHECK(det != 0);
+            for (const ltc::ltc_table* t : {&cosine, &lobe}) {
+                CHECK(t->node(u, a, ltc::channel::magnitude) >= 0);
+                CHECK(t->node(u, a, ltc::channel::fresnel) >= 0);
+                CHECK(std::isfinite(t->node(u, a, ltc::channel::magnitude)));
+                CHECK(std::isfinite(t->node(u, a, ltc::channel::fresnel)));
+            }
+            all_ltc += cosine.node(u, a, ltc::channel::magnitude) == 0 ? 1 : 0;
+        }
+    // The cosine takes a share somewhere, else the table would be the one-lobe fit.
+    CHECK(all_ltc < n * n);
+}
+
+TEST_CASE("cosine-lobe shading: the form factor as the cosine's integral, the one-lobe diffuse term", "[cosine_lobe]") {
+    const std::vector<dvec3> quad = facing_rectangle(200, 25, 0.6, 0.3);
+    const dvec3 P(0), N(0, 0, 1), F0(0.04, 0.5, 1.0), albedo(0.5), radiance(2.0);
+    for (const double theta : {0.0, 40.0, 70.0, 85.0})
+        for (const double r : {0.1, 0.35, 0.8})
+            for (const auto mode : {ltc::horizon_clipping::ltc_space, ltc::horizon_clipping::shading_first}) {
+                CAPTURE(theta, r, int(mode));
+                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
+                const auto frame = ltc::make_shading_frame(N, V);
+                auto lobes = ltc::ggx_cosine_lobe::fetch(frame.cos_theta_v, r);
+                // The cosine lobe shaded as an LTC of M = I: its M^-1 p is p, so that in LTC space
+                // the integral is the form factor's, bit for bit.
+                lobes[0].m_inv = glm::dmat3(1.0);
+                const auto fast = ltc::shade_polygon_light_cosine_lobe(frame, lobes, P, F0, albedo, radiance, quad.data(), 4,
+                                                                       ltc::sidedness::one_sided, mode);
+                const auto generic = ltc::shade_polygon_light_two_lobe(frame, {lobes[1], lobes[0]}, P, F0, albedo, radiance,
+                                                                       quad.data(), 4, ltc::sidedness::one_sided, mode);
+                if (mode == ltc::horizon_clipping::ltc_space) CHECK(fast.specular == generic.specular);
+                // shading_first clips the cosine's polygon twice (once in each space), which may
+                // move the clipped vertices by a rounding: a few u of each lobe's term.
+                const double eps = std::numeric_limits<double>::epsilon();
+                for (int c = 0; c < 3; ++c) CHECK(std::abs(fast.specular[c] - generic.specular[c]) <= 16 * eps * generic.specular[c]);
+                CHECK(fast.diffuse == generic.diffuse);
+                // The table's lookup of the cosine's matrix gives the identity.
+                const auto fetched = ltc::ggx_cosine_lobe::fetch(frame.cos_theta_v, r);
+                CHECK(fetched[0].m_inv == glm::dmat3(1.0));
+                // The diffuse term is the one-lobe shading's.
+                const auto one = ltc::shade_polygon_light(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
+                                                          ltc::sidedness::one_sided, mode);
+                CHECK(fast.diffuse == one.diffuse);
+                CHECK(fast.specular.x >= 0);
+            }
+}
+
+TEST_CASE("cosine-lobe shading: bad input gives finite results", "[cosine_lobe][bad_input]") {
+    const std::vector<dvec3> quad = facing_rectangle(180, 30, 0.5, 0.25);
+    const dvec3 N(0, 0, 1), V = ltc::brdf::view_from_cos(0.5);
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (const double r : {-1.0, 0.0, 2.0, nan, inf}) {
+        const auto s = ltc::shade_polygon_light_cosine_lobe(dvec3(0), N, V, r, dvec3(1), dvec3(1), dvec3(1), quad.data(), 4,
+                                                            ltc::sidedness::one_sided);
+        CAPTURE(r);
+        for (int c = 0; c < 3; ++c) CHECK((std::isfinite(s.specular[c]) && std::isfinite(s.diffuse[c])));
+    }
+    const dvec3 at_p[4] = {dvec3(0), quad[1], quad[2], quad[3]};
+    for (const auto& s : {ltc::shade_polygon_light_cosine_lobe(dvec3(0), N, V, 0.5, dvec3(1), dvec3(1), dvec3(1), quad.data(),
+                                                               2, ltc::sidedness::one_sided),
+                          ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0), V, 0.5, dvec3(1), dvec3(1), dvec3(1),
+                                                               quad.data(), 4, ltc::sidedness::one_sided),
+                          ltc::shade_polygon_light_cosine_lobe(dvec3(0), N, V, 0.5, dvec3(1), dvec3(1), dvec3(1), at_p, 4,
+                                                               ltc::sidedness::one_sided)}) {
+        CHECK(s.specular == dvec3(0));
+        CHECK(s.diffuse == dvec3(0));
+    }
+}
+
+TEST_CASE("cosine-lobe table against the Monte Carlo GGX ground truth at grazing views", "[cosine_lobe][ground_truth]") {
+    // The lights of tests/test_two_lobe.cpp's grazing test (theta_v 70 and 80 deg, roughness 0.3
+    // and 0.5; 0.5 x 0.25 rectangles at distance 1 at the mirror direction, near the zenith and at
+    // the side; off the report's grid), and its ground truth (2^16 MIS iterations, the same seeds,
+    // relative standard errors below 0.5%, checked). Measured with the shipped tables and these
+    // seeds, signed errors one lobe / LTC and cosine:
+    //                   mirror          zenith           side
+    //   70 deg, 0.3   -2.5 / +1.0    +123.1 / +60.5   -83.7 / -79.6
+    //   70 deg, 0.5   +2.0 / +6.1     +62.9 / +22.9   -70.0 / -25.9
+    //   80 deg, 0.3   -4.8 / +10.8   +224.8 / +44.5   -95.9 / -79.0
+    //   80 deg, 0.5  +13.9 / +19.7    +66.3 / +34.5   -87.8 / -11.6
+    // Mean |error| 69.8% / 33.0%, worst 224.8% / 79.6% (two lobes: 22.7%, 87.9%): the tails'
+    // error halves, the mirror lights get worse. Bounds: the figures rounded up in their second
+    // digit (new tables or seeds need new figures, from this test's output).
+    double sum1 = 0, sumc = 0, worstc = 0;
+    int count = 0;
+    for (const double theta : {70.0, 80.0})
+        for (const double r : {0.3, 0.5}) {
+            const std::vector<dvec3> lights[] = {facing_rectangle(180, 90 - theta, 0.5, 0.25), facing_rectangle(0, 80, 0.5, 0.25),
+                                                 facing_rectangle(90, 30, 0.5, 0.25)};
+            for (const auto& L : lights) {
+                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
+                ltc::ground_truth::options opt;
+                opt.samples = 1u << 16;
+                opt.seed = 7000 + std::uint64_t(count);
+                const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
+                const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(),
+                                                          L.size(), ltc::sidedness::one_sided);
+                const auto cos = ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
+                                                                      L.data(), L.size(), ltc::sidedness::one_sided);
+                const double e1 = std::abs(one.specular.x - gt.mean) / gt.mean, ec = std::abs(cos.specular.x - gt.mean) / gt.mean;
+                CAPTURE(theta, r, count, gt.mean, gt.standard_error, one.specular.x, cos.specular.x, e1, ec);
+                CHECK(gt.standard_error <= 0.005 * gt.mean);
+                sum1 += e1, sumc += ec;
+                worstc = std::max(worstc, ec);
+                ++count;
+            }
+        }
+    WARN("one lobe: mean " << 100 * sum1 / count << "%; LTC and cosine: mean " << 100 * sumc / count << "%, worst "
+                           << 100 * worstc << "%");
+    CHECK(sumc / count <= 0.34);
+    CHECK(worstc <= 0.80);
+    CHECK(sumc < 0.5 * sum1);
+}
+
+TEST_CASE("fit_two_lobe_table with the cosine: the same table on any number of threads", "[cosine_lobe][fit]") {
+    ltc::fit::options opt;
+    opt.size = 4;
+    opt.threads = 1;
+    const auto model = ltc::fit::two_lobe_model::ltc_and_cosine;
+    const std::vector<float> one = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt, model).packed();
+    opt.threads = 3;
+    const std::vector<float> three = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt, model).packed();
+    REQUIRE(one.size() == three.size());
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        CAPTURE(i);
+        CHECK(std::isfinite(one[i]));
+        CHECK(one[i] == three[i]);
+    }
+}
