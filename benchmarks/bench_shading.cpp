@@ -19,6 +19,7 @@
 
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
@@ -196,14 +197,22 @@ void BM_batch_shading(benchmark::State& state) {
     report_errors(state, out.red());
 }
 
-// The two-lobe batch (ltc/shading/batch_two_lobe.hpp): throughput only, as BM_library_scalar_two_lobe.
-void BM_batch_shading_two_lobe(benchmark::State& state) {
+// The opt-in batches, throughput only, as BM_library_scalar_opt_in: Cosine false, the two-lobe
+// batch (ltc/shading/batch_two_lobe.hpp); true, the batch of an LTC and the cosine
+// (ltc/shading/batch_cosine_lobe.hpp).
+template <bool Cosine>
+void BM_batch_shading_opt_in(benchmark::State& state) {
     const scene& s = the_scene();
     const auto points = s.points();
     outputs out;
     const auto results = out.results();
     for (auto _ : state) {
-        ltc::batch::shade_polygon_light_two_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results, kItems);
+        if (Cosine)
+            ltc::batch::shade_polygon_light_cosine_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results,
+                                                        kItems);
+        else
+            ltc::batch::shade_polygon_light_two_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results,
+                                                     kItems);
         benchmark::DoNotOptimize(out.c[0].data());
         benchmark::ClobberMemory();
     }
@@ -211,7 +220,7 @@ void BM_batch_shading_two_lobe(benchmark::State& state) {
 }
 
 // One point (the grid's centre) and 4096 copies of the light moved about: throughput only.
-// Lobes = 2: ltc::batch::shade_quad_lights_two_lobe.
+// Lobes = 2: ltc::batch::shade_quad_lights_two_lobe; 3: ltc::batch::shade_quad_lights_cosine_lobe.
 template <int Lobes>
 void BM_batch_quad_lights(benchmark::State& state) {
     const scene& s = the_scene();
@@ -232,7 +241,10 @@ void BM_batch_quad_lights(benchmark::State& state) {
     outputs out;
     const auto results = out.results();
     for (auto _ : state) {
-        if (Lobes == 1)
+        if (Lobes == 3)
+            ltc::batch::shade_quad_lights_cosine_lobe(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i),
+                                                      s.vec(13, i), lights, ltc::sidedness::two_sided, results, kItems);
+        else if (Lobes == 1)
             ltc::batch::shade_quad_lights(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i), lights,
                                           ltc::sidedness::two_sided, results, kItems);
         else
@@ -258,8 +270,10 @@ BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx512);
-BENCHMARK(BM_batch_shading_two_lobe);
+BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, false)->Name("BM_batch_shading_two_lobe");
+BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, true)->Name("BM_batch_shading_cosine_lobe");
 BENCHMARK_TEMPLATE(BM_batch_quad_lights, 1);
 BENCHMARK_TEMPLATE(BM_batch_quad_lights, 2);
+BENCHMARK_TEMPLATE(BM_batch_quad_lights, 3);
 
 LTC_BENCHMARK_MAIN();

@@ -20,6 +20,7 @@
 #include "support/rounding_bound.hpp"
 
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
@@ -133,8 +134,10 @@ namespace {
 // Lobes = 2, the two lobes of the GGX two-lobe table (batch::shade_polygon_light_two_lobe; tables
 // must be its lobe tables), against the scalar shading with the kernel's frame and each lobe's
 // coefficients. With two lobes the specular terms add: their tolerances add, plus 2 u of the sum
-// (the kernel and the reference each round it once).
-template <int Lobes>
+// (the kernel and the reference each round it once). With Cosine, the table of an LTC and the
+// cosine (batch::shade_polygon_light_cosine_lobe; tables its lobe tables): lobe 1's reference is
+// the LTC of M^-1 = I, whose integral is the form factor bit for bit (tests/test_cosine_lobe.cpp).
+template <int Lobes, bool Cosine = false>
 void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool ggx) {
     const std::size_t count = 1031;  // not a multiple of any width: the tail runs
     const points_soa pts(count, 12);
@@ -154,8 +157,11 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                                                                   side == ltc::sidedness::two_sided};
                 results_soa kernel(count), out(count);
                 const std::size_t vectorized =
-                    ltc_test::shading_kernel<Policy, Lobes>(isa, sl, pts.view(), kernel.view(), count, tables);
-                if (Lobes == 2)
+                    ltc_test::shading_kernel<Policy, Lobes, Cosine>(isa, sl, pts.view(), kernel.view(), count, tables);
+                if (Cosine)
+                    ltc::batch::shade_polygon_light_cosine_lobe<Policy>(pts.view(), radiance, light.data(), n, side,
+                                                                        out.view(), count, isa);
+                else if (Lobes == 2)
                     ltc::batch::shade_polygon_light_two_lobe<Policy>(pts.view(), radiance, light.data(), n, side,
                                                                      out.view(), count, isa);
                 else if (ggx)
@@ -176,7 +182,9 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                         const auto scalar_frame = ltc::make_shading_frame(pts.vec(3, i), pts.vec(6, i));
                         const float c = scalar_frame.cos_theta_v, r = pts.a[9][i];
                         const auto want =
-                            Lobes == 2 ? ltc::shade_polygon_light_two_lobe<Policy>(scalar_frame, ltc::ggx_two_lobe::fetch(c, r),
+                            Cosine ? ltc::shade_polygon_light_cosine_lobe<Policy>(scalar_frame, ltc::ggx_cosine_lobe::fetch(c, r),
+                                                                                 P, F0, albedo, radiance, light.data(), n, side)
+                            : Lobes == 2 ? ltc::shade_polygon_light_two_lobe<Policy>(scalar_frame, ltc::ggx_two_lobe::fetch(c, r),
                                                                                   P, F0, albedo, radiance, light.data(), n, side)
                                        : ltc::shade_polygon_light<Policy>(scalar_frame, tables[0]->fetch(c, r), P, F0,
                                                                           albedo, radiance, light.data(), n, side);
@@ -198,6 +206,7 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                         lobe.m_inv[0][0] = stages[l].channel[0][i], lobe.m_inv[0][2] = stages[l].channel[1][i];
                         lobe.m_inv[2][0] = stages[l].channel[2][i], lobe.m_inv[2][2] = stages[l].channel[3][i];
                         lobe.m_inv[1][1] = 1.0f;
+                        if (Cosine && l == 0) lobe.m_inv = glm::mat3(1.0f);  // the cosine: E
                         lobe.magnitude = stages[l].channel[4][i], lobe.fresnel = stages[l].channel[5][i];
                         const auto one =
                             ltc::shade_polygon_light<Policy>(frame, lobe, P, F0, albedo, radiance, light.data(), n, side);
@@ -251,6 +260,54 @@ TEST_CASE("two-lobe batch shading matches shade_polygon_light_two_lobe point by 
     check_lights_over_points(tables, false);
 }
 
+TEST_CASE("LTC-and-cosine batch shading matches shade_polygon_light_cosine_lobe point by point",
+          "[batch][shading][cosine_lobe]") {
+    // One pass of the kernel: one frame, one form factor (also the cosine's integral), one LTC integral.
+    const ltc::ltc_table cosine = ltc::ggx_cosine_lobe::lobe_table(0), lobe = ltc::ggx_cosine_lobe::lobe_table(1);
+    const ltc::ltc_table* const tables[2] = {&cosine, &lobe};
+    check_lights_over_points<2, true>(tables, false);
+}
+
+TEST_CASE("batch shading kernel: lobe tables of different sizes, each at its own position", "[batch][shading][two_lobe]") {
+    // The kernel fetches the lobes' tables in one pass where they share a size (the shipped ones),
+    // else each at its own position: the 64 x 64 GGX table with a 32 x 32 lobe must give the sum of
+    // the one-table kernels' specular terms (the same operations per lobe; the sum rounded once
+    // in the kernel and once here: 2 u of it) and their diffuse term bit for bit.
+    const std::size_t count = 259;
+    const points_soa pts(count, 17);
+    ltc_test::rng g(19);
+    const ltc::ltc_table lobe = ltc::ggx_two_lobe::lobe_table(1);
+    const ltc::ltc_table* const both[2] = {&ltc::ggx::table, &lobe};
+    const ltc::ltc_table* const first[1] = {&ltc::ggx::table};
+    const ltc::ltc_table* const second[1] = {&lobe};
+    for (const auto isa : ltc::batch::instruction_sets) {
+        if (isa == ltc::batch::isa::scalar || !ltc::batch::available(isa)) continue;
+        const auto light = ltc_test::random_polygon(g, 4, true, false);
+        std::vector<float> lx, ly, lz;
+        for (const auto& p : light) lx.push_back(p.x), ly.push_back(p.y), lz.push_back(p.z);
+        const ltc::batch::detail::shading_light<float> sl{lx.data(), ly.data(), lz.data(), 4, {1.0f, 2.0f, 3.0f}, false};
+        results_soa two(count), a(count), b(count);
+        const std::size_t n2 = ltc_test::shading_kernel<Policy, 2>(isa, sl, pts.view(), two.view(), count, both);
+        const std::size_t na = ltc_test::shading_kernel<Policy, 1>(isa, sl, pts.view(), a.view(), count, first);
+        const std::size_t nb = ltc_test::shading_kernel<Policy, 1>(isa, sl, pts.view(), b.view(), count, second);
+        REQUIRE(n2 == na);
+        REQUIRE(n2 == nb);
+        std::size_t bad = 0, checked = 0;
+        for (std::size_t i = 0; i < n2; ++i) {
+            if (std::isnan(two.c[0][i]) || std::isnan(a.c[0][i]) || std::isnan(b.c[0][i])) continue;  // handed back
+            ++checked;
+            for (int c = 0; c < 3; ++c) {
+                const double sum = double(a.c[c][i]) + double(b.c[c][i]);
+                bad += !(std::abs(double(two.c[c][i]) - sum) <= 2 * kU * std::abs(sum));
+                bad += two.c[3 + c][i] != a.c[3 + c][i];
+            }
+        }
+        CAPTURE(static_cast<int>(isa), checked);
+        CHECK(bad == 0);
+        CHECK(checked > count / 2);
+    }
+}
+
 TEST_CASE("batch shading: degenerate points and lights give the scalar function's values", "[batch][shading][two_lobe]") {
     const std::size_t count = 64;
     points_soa pts(count, 5);
@@ -265,9 +322,12 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
     for (const auto isa : ltc::batch::instruction_sets) {
         if (!ltc::batch::available(isa)) continue;
         for (const std::size_t n : {2u, 4u})
-            for (const int lobes : {1, 2}) {  // batch::shade_polygon_light, or _two_lobe
+            for (const int lobes : {1, 2, 3}) {  // batch::shade_polygon_light, _two_lobe, _cosine_lobe
                 results_soa out(count);
-                if (lobes == 1)
+                if (lobes == 3)
+                    ltc::batch::shade_polygon_light_cosine_lobe<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
+                                                                        ltc::sidedness::two_sided, out.view(), count, isa);
+                else if (lobes == 1)
                     ltc::batch::shade_polygon_light<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
                                                             ltc::sidedness::two_sided, out.view(), count, isa);
                 else
@@ -279,7 +339,9 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
                     const float r = pts.a[9][i];
                     const auto side = ltc::sidedness::two_sided;
                     const auto want =
-                        lobes == 1
+                        lobes == 3 ? ltc::shade_polygon_light_cosine_lobe<Policy>(P, N, V, r, F0, albedo, radiance,
+                                                                                 light.data(), n, side)
+                        : lobes == 1
                             ? ltc::shade_polygon_light<Policy>(P, N, V, r, F0, albedo, radiance, light.data(), n, side)
                             : ltc::shade_polygon_light_two_lobe<Policy>(P, N, V, r, F0, albedo, radiance, light.data(), n,
                                                                         side);
@@ -306,6 +368,8 @@ namespace {
 // two-lobe table (lobes = 2: shade_quad_lights_two_lobe), against the scalar shading light by
 // light. With two lobes the frame and the fetch are the scalar ones, so the specular tolerance
 // is the sum of the two lobes' (each lobe's I_ltc within its own), the diffuse one lobe 1's.
+// lobes = 3: the table of an LTC and the cosine (shade_quad_lights_cosine_lobe), the cosine's
+// tolerance that of the LTC of M^-1 = I (its integral is E).
 void check_quad_lights(int lobes) {
     const std::size_t count = 517;
     ltc_test::rng g(21);
@@ -328,23 +392,33 @@ void check_quad_lights(int lobes) {
             for (const auto isa : ltc::batch::instruction_sets) {
                 if (!ltc::batch::available(isa)) continue;
                 results_soa out(count);
-                if (lobes == 1)
+                if (lobes == 3)
+                    ltc::batch::shade_quad_lights_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side,
+                                                                      out.view(), count, isa);
+                else if (lobes == 1)
                     ltc::batch::shade_quad_lights<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(), count, isa);
                 else
                     ltc::batch::shade_quad_lights_two_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(),
                                                                    count, isa);
                 const ltc::shading_frame<float> frame = ltc::make_shading_frame(N, V);
                 const auto lobe = ltc::ggx::fetch(frame.cos_theta_v, roughness);
-                const auto two = ltc::ggx_two_lobe::fetch(frame.cos_theta_v, roughness);
+                const auto two = lobes == 3 ? ltc::ggx_cosine_lobe::fetch(frame.cos_theta_v, roughness)
+                                            : ltc::ggx_two_lobe::fetch(frame.cos_theta_v, roughness);
+                auto cosine = two[0];
+                cosine.m_inv = glm::mat3(1.0f);
                 std::size_t bad = 0;
                 for (std::size_t j = 0; j < count; ++j) {
                     const glm::vec3 radiance(v[12][j], v[13][j], v[14][j]);
                     const auto want =
-                        lobes == 1 ? ltc::shade_polygon_light<Policy>(P, N, V, roughness, F0, albedo, radiance, quads[j].data(),
+                        lobes == 3 ? ltc::shade_polygon_light_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance,
+                                                                                 quads[j].data(), 4, side)
+                        : lobes == 1 ? ltc::shade_polygon_light<Policy>(P, N, V, roughness, F0, albedo, radiance, quads[j].data(),
                                                                       4, side)
                                    : ltc::shade_polygon_light_two_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance,
                                                                                quads[j].data(), 4, side);
-                    auto tol = tolerance(frame, lobes == 1 ? lobe : two[0], P, F0, albedo, radiance, quads[j], want);
+                    auto tol = tolerance(frame, lobes == 1 ? lobe : lobes == 3 ? two[1] : two[0], P, F0, albedo, radiance,
+                                         quads[j], want);
+                    if (lobes == 3) tol.specular += tolerance(frame, cosine, P, F0, albedo, radiance, quads[j], want).specular;
                     if (lobes == 2) tol.specular += tolerance(frame, two[1], P, F0, albedo, radiance, quads[j], want).specular;
                     bad += violations(out.at(j), want, tol);
                 }
@@ -352,7 +426,10 @@ void check_quad_lights(int lobes) {
                 CHECK(bad == 0);
                 // N = 0: nothing to shade, zeros as from shade_polygon_light.
                 results_soa none(count);
-                if (lobes == 1)
+                if (lobes == 3)
+                    ltc::batch::shade_quad_lights_cosine_lobe<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights,
+                                                                      side, none.view(), count, isa);
+                else if (lobes == 1)
                     ltc::batch::shade_quad_lights<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
                                                           none.view(), count, isa);
                 else
@@ -372,4 +449,9 @@ TEST_CASE("batch shading of many quad lights matches shade_polygon_light light b
 
 TEST_CASE("two-lobe batch shading of many quad lights matches shade_polygon_light_two_lobe", "[batch][shading][two_lobe]") {
     check_quad_lights(2);
+}
+
+TEST_CASE("LTC-and-cosine batch shading of many quad lights matches shade_polygon_light_cosine_lobe",
+          "[batch][shading][cosine_lobe]") {
+    check_quad_lights(3);
 }

@@ -54,6 +54,7 @@
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
+#include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
 
 #include <ltc/fitting/brdf/model.hpp>

@@ -22,6 +22,7 @@
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
@@ -109,7 +110,8 @@ void run(FuzzedDataProvider& in) {
         require_finite(r3.diffuse, "LTC and cosine GGX diffuse");
     }
 
-    // The same point in the batch shading, one and two lobes, with every instruction set: 17 items
+    // The same point in the batch shading, one lobe, two lobes, an LTC and the cosine, with every
+    // instruction set: 17 items
     // (full vectors and a tail at every width), roughness from the fuzzed one to 1.
     {
         constexpr std::size_t count = 17;
@@ -131,8 +133,11 @@ void run(FuzzedDataProvider& in) {
         ltc::batch::shading_results<T> out;
         for (int c = 0; c < 3; ++c) out.specular[c] = results[c].data(), out.diffuse[c] = results[3 + c].data();
         for (const auto isa : ltc::batch::instruction_sets) {
-            for (int lobes = 1; lobes <= 2; ++lobes) {
-                if (lobes == 1)
+            for (int lobes = 1; lobes <= 3; ++lobes) {
+                if (lobes == 3)
+                    ltc::batch::shade_polygon_light_cosine_lobe(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out,
+                                                                count, isa);
+                else if (lobes == 1)
                     ltc::batch::shade_polygon_light(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out, count, isa);
                 else
                     ltc::batch::shade_polygon_light_two_lobe(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out,

@@ -69,22 +69,23 @@ inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7]
 }
 
 /// The shading kernel of `which` alone: points [0, returned) written, NaN in specular red where
-/// it hands a point back to the scalar function; lobe l's coefficients from tables[l].
-template <typename Policy, int Lobes>
+/// it hands a point back to the scalar function; lobe l's coefficients from tables[l] (with
+/// Cosine, tables[0] the cosine lobe's, integrated as the form factor).
+template <typename Policy, int Lobes, bool Cosine = false>
 std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
                            const ltc::batch::shading_points<float>& points,
                            const ltc::batch::shading_results<float>& out, std::size_t count,
                            const ltc::ltc_table* const (&tables)[Lobes]) {
 #if LTC_SIMD_AVX512
     if (which == ltc::batch::isa::avx512)
-        return ltc::batch::detail::run_shade_avx512<Policy, Lobes>(tables, light, points, out, count);
+        return ltc::batch::detail::run_shade_avx512<Policy, Lobes, Cosine>(tables, light, points, out, count);
 #endif
 #if LTC_SIMD_AVX2
     if (which == ltc::batch::isa::avx2)
-        return ltc::batch::detail::run_shade_avx2<Policy, Lobes>(tables, light, points, out, count);
+        return ltc::batch::detail::run_shade_avx2<Policy, Lobes, Cosine>(tables, light, points, out, count);
 #endif
 #if LTC_SIMD
-    return ltc::batch::detail::run_shade_baseline<Policy, Lobes>(tables, light, points, out, count);
+    return ltc::batch::detail::run_shade_baseline<Policy, Lobes, Cosine>(tables, light, points, out, count);
 #else
     (void)which, (void)light, (void)points, (void)out, (void)count, (void)tables;
     return 0;

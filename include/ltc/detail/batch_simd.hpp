@@ -75,11 +75,11 @@ LTC_SIMD_AVX2_TARGET std::size_t run_avx2(const matrices<T>& mats, std::size_t n
 }
 
 /// Points [0, returned) through the AVX2 shading kernel, with the sum of the LTCs of Lobes tables.
-template <typename Policy, int Lobes, typename T>
+template <typename Policy, int Lobes, bool Cosine = false, typename T>
 LTC_SIMD_AVX2_TARGET std::size_t run_shade_avx2(const ltc_table* const* tables, const shading_light<T>& light,
                                                 const shading_points<T>& points, const shading_results<T>& out,
                                                 std::size_t count) {
-    return avx2::shade_items<Policy, T, Lobes>(tables, light, points, out, count);
+    return avx2::shade_items<Policy, T, Lobes, Cosine>(tables, light, points, out, count);
 }
 #endif
 
@@ -102,19 +102,19 @@ LTC_SIMD_AVX512_TARGET std::size_t run_avx512(const matrices<T>& mats, std::size
 }
 
 /// Points [0, returned) through the AVX-512 shading kernel, with the sum of the LTCs of Lobes tables.
-template <typename Policy, int Lobes, typename T>
+template <typename Policy, int Lobes, bool Cosine = false, typename T>
 LTC_SIMD_AVX512_TARGET std::size_t run_shade_avx512(const ltc_table* const* tables, const shading_light<T>& light,
                                                     const shading_points<T>& points, const shading_results<T>& out,
                                                 std::size_t count) {
-    return avx512::shade_items<Policy, T, Lobes>(tables, light, points, out, count);
+    return avx512::shade_items<Policy, T, Lobes, Cosine>(tables, light, points, out, count);
 }
 #endif
 
 /// Points [0, returned) through the baseline shading kernel, with the sum of the LTCs of Lobes tables.
-template <typename Policy, int Lobes, typename T>
+template <typename Policy, int Lobes, bool Cosine = false, typename T>
 std::size_t run_shade_baseline(const ltc_table* const* tables, const shading_light<T>& light,
                                const shading_points<T>& points, const shading_results<T>& out, std::size_t count) {
-    return baseline::shade_items<Policy, T, Lobes>(tables, light, points, out, count);
+    return baseline::shade_items<Policy, T, Lobes, Cosine>(tables, light, points, out, count);
 }
 
 #endif  // LTC_SIMD

@@ -57,8 +57,9 @@ namespace detail {
 
 /// The batch shading of one polygonal light with the sum of the LTCs of Lobes tables: the SIMD
 /// kernel (ltc/detail/batch_simd_shading.inc) for the full vectors of points, then
-/// scalar(frame, i) for the tail and for the points it hands back.
-template <typename Policy, int Lobes, typename T, typename Scalar>
+/// scalar(frame, i) for the tail and for the points it hands back. With Cosine, tables[0] is the
+/// cosine lobe's (ltc/shading/ggx_cosine_lobe_fetch.hpp), integrated as the form factor.
+template <typename Policy, int Lobes, bool Cosine = false, typename T, typename Scalar>
 void shade_polygon_light_lobes(const ltc_table* const (&tables)[Lobes], const shading_points<T>& points,
                                const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
                                sidedness side, const shading_results<T>& out, std::size_t count, isa which,
@@ -79,16 +80,16 @@ void shade_polygon_light_lobes(const ltc_table* const (&tables)[Lobes], const sh
 #if LTC_SIMD
         if (n >= 3) switch (resolve(which)) {
                 case isa::baseline:
-                    vectorized = run_shade_baseline<EdgePolicy, Lobes>(tables, light, points, out, count);
+                    vectorized = run_shade_baseline<EdgePolicy, Lobes, Cosine>(tables, light, points, out, count);
                     break;
 #if LTC_SIMD_AVX2
                 case isa::avx2:
-                    vectorized = run_shade_avx2<EdgePolicy, Lobes>(tables, light, points, out, count);
+                    vectorized = run_shade_avx2<EdgePolicy, Lobes, Cosine>(tables, light, points, out, count);
                     break;
 #endif
 #if LTC_SIMD_AVX512
                 case isa::avx512:
-                    vectorized = run_shade_avx512<EdgePolicy, Lobes>(tables, light, points, out, count);
+                    vectorized = run_shade_avx512<EdgePolicy, Lobes, Cosine>(tables, light, points, out, count);
                     break;
 #endif
                 default: break;
@@ -146,12 +147,13 @@ struct quad_lights {
 namespace detail {
 
 /// shade_quad_lights with `count_lobes` (1 or 2) lobes' coefficients, each with its share in its
-/// magnitude and Fresnel term (ltc/shading/ggx_two_lobe_fetch.hpp): one more I_ltc per lobe.
+/// magnitude and Fresnel term (ltc/shading/ggx_two_lobe_fetch.hpp): one more I_ltc per lobe; and,
+/// where `cosine` is given, a cosine lobe (ltc/shading/ggx_cosine_lobe_fetch.hpp) integrated as E.
 template <typename Policy, typename T>
 void shade_quad_lights_lobes(const glm::vec<3, T>& P, const shading_frame<T>& frame, const ltc_coefficients<T>* lobes,
                              int count_lobes, const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo,
                              const quad_lights<T>& lights, sidedness side, const shading_results<T>& out,
-                             std::size_t count, isa which) {
+                             std::size_t count, isa which, const ltc_coefficients<T>* cosine = nullptr) {
     using vec3 = glm::vec<3, T>;
     if (!frame.valid) {  // N = 0: nothing to shade, as in ltc::shade_polygon_light
         for (std::size_t i = 0; i < count; ++i) write(out, i, polygon_light_result<T>{});
@@ -159,6 +161,7 @@ void shade_quad_lights_lobes(const glm::vec<3, T>& P, const shading_frame<T>& fr
     }
     vec3 brdf[2];
     for (int l = 0; l < count_lobes; ++l) brdf[l] = F0 * lobes[l].magnitude + (vec3(T(1)) - F0) * lobes[l].fresnel;
+    const vec3 brdf_cosine = cosine ? F0 * cosine->magnitude + (vec3(T(1)) - F0) * cosine->fresnel : vec3(T(0));
     // The lights in the local frame (frame.to_local(p - P)) block by block, then E (M = I) and
     // each lobe's I_ltc (M = its M^-1) through the quad kernel.
     constexpr std::size_t block = 256;
@@ -184,6 +187,7 @@ void shade_quad_lights_lobes(const glm::vec<3, T>& P, const shading_frame<T>& fr
             polygon_light_result<T> r;
             r.specular = radiance * brdf[0] * I[0][j];
             if (count_lobes > 1) r.specular += radiance * brdf[1] * I[1][j];
+            if (cosine) r.specular += radiance * brdf_cosine * E[j];
             r.diffuse = albedo * radiance * E[j];
             write(out, base + j, r);
         }
