@@ -23,7 +23,7 @@
 #include <stdexcept>
 #include <vector>
 
-using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle
+using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle, node_m_inv
 
 TEST_CASE("two-lobe table: finite entries, invertible lobes, shares adding up to the magnitude", "[two_lobe]") {
     const int n = ltc::ggx_two_lobe::size;
@@ -33,13 +33,7 @@ TEST_CASE("two-lobe table: finite entries, invertible lobes, shares adding up to
         for (int a = 0; a < n; ++a)
             for (int u = 0; u < n; ++u) {
                 CAPTURE(l, a, u);
-                glm::dmat3 m(0.0);
-                m[0][0] = t.node(u, a, ltc::channel::m_inv_00);
-                m[0][2] = t.node(u, a, ltc::channel::m_inv_02);
-                m[2][0] = t.node(u, a, ltc::channel::m_inv_20);
-                m[2][2] = t.node(u, a, ltc::channel::m_inv_22);
-                m[1][1] = 1;
-                const double det = glm::determinant(m);
+                const double det = glm::determinant(node_m_inv(t, u, a));
                 CHECK(std::isfinite(det));
                 CHECK(det != 0);
                 CHECK(t.node(u, a, ltc::channel::magnitude) >= 0);

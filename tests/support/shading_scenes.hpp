@@ -102,4 +102,15 @@ inline std::vector<dvec3> facing_rectangle(double azimuth_deg, double elevation_
     return v;
 }
 
+/// The normalized M^-1 stored at node (u, a) of a table (its middle element 1).
+inline glm::dmat3 node_m_inv(const ltc::ltc_table& t, int u, int a) {
+    glm::dmat3 m(0.0);
+    m[0][0] = t.node(u, a, ltc::channel::m_inv_00);
+    m[0][2] = t.node(u, a, ltc::channel::m_inv_02);
+    m[2][0] = t.node(u, a, ltc::channel::m_inv_20);
+    m[2][2] = t.node(u, a, ltc::channel::m_inv_22);
+    m[1][1] = 1;
+    return m;
+}
+
 }  // namespace ltc_test::shading_checks
