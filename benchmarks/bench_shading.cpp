@@ -3,10 +3,10 @@
 // 16-case-clipped integrals), ltc::shade_polygon_light point by point, and
 // ltc::batch::shade_polygon_light (one point per SIMD lane); and one point shaded by 4096 quad
 // lights (ltc::batch::shade_quad_lights); and ltc::shade_polygon_light_two_lobe point by point and
-// ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table: their costs against the
-// one-lobe ones), and ltc::shade_polygon_light_cosine_lobe point by point (the opt-in table of an
-// LTC and the cosine: its cost against
-// one-lobe ones, no error counters since it is another approximation). Items/s plus, as counters, the maximum absolute and
+// ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table), and
+// ltc::shade_polygon_light_cosine_lobe point by point and in batches (the opt-in table of an LTC
+// and the cosine), with the quad-light batches of both: their costs against the one-lobe ones, no
+// error counters since they are other approximations. Items/s plus, as counters, the maximum absolute and
 // relative error of specular + diffuse (red) against ltc::shade_polygon_light in double with the
 // exact edge policy: the precision each float path loses, not the LTC approximation's own error.
 //

@@ -129,7 +129,7 @@ arguments parse(int argc, char** argv) {
         } else if (arg == "--lobes") {
             const std::string l = next();
             if (l == "cosine") a.lobes = 2, a.model = ltc::fit::two_lobe_model::ltc_and_cosine;
-            else a.lobes = int(parse_integer(arg, l, 1, 2));
+            else a.lobes = int(parse_integer(arg, l, 1, 2)), a.model = ltc::fit::two_lobe_model::two_ltcs;
         } else if (arg == "--threads" || arg == "-j") {
             a.threads = unsigned(parse_integer(arg, next(), 1, 4096));
         } else if (arg == "--quiet" || arg == "-q") {

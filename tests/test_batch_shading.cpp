@@ -136,7 +136,8 @@ namespace {
 // coefficients. With two lobes the specular terms add: their tolerances add, plus 2 u of the sum
 // (the kernel and the reference each round it once). With Cosine, the table of an LTC and the
 // cosine (batch::shade_polygon_light_cosine_lobe; tables its lobe tables): lobe 1's reference is
-// the LTC of M^-1 = I, whose integral is the form factor bit for bit (tests/test_cosine_lobe.cpp).
+// the LTC of M^-1 = I, whose integral is the form factor bit for bit (tests/test_cosine_lobe.cpp),
+// lobe 2's the lookup with its premultiplied M^-1 divided out (ggx_cosine_lobe::unpremultiplied).
 template <int Lobes, bool Cosine = false>
 void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool ggx) {
     const std::size_t count = 1031;  // not a multiple of any width: the tail runs
@@ -208,6 +209,7 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                         lobe.m_inv[1][1] = 1.0f;
                         if (Cosine && l == 0) lobe.m_inv = glm::mat3(1.0f);  // the cosine: E
                         lobe.magnitude = stages[l].channel[4][i], lobe.fresnel = stages[l].channel[5][i];
+                        if (Cosine && l == 1) lobe = ltc::ggx_cosine_lobe::unpremultiplied(lobe);  // the kernel's division
                         const auto one =
                             ltc::shade_polygon_light<Policy>(frame, lobe, P, F0, albedo, radiance, light.data(), n, side);
                         const auto t = tolerance(frame, lobe, P, F0, albedo, radiance, light, one);

@@ -140,11 +140,15 @@ evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int 
 }
 
 /// Both lobes' estimates summed (ltc/shading/ggx_two_lobe_fetch.hpp's layout: each lobe an
-/// ordinary table whose magnitude carries its share), over the same significant set.
+/// ordinary table whose magnitude carries its share; with `premultiplied`, lobe 2's m_inv
+/// premultiplied, as in ltc/shading/ggx_cosine_lobe_fetch.hpp), over the same significant set.
 evaluation evaluate_two_lobes(const std::vector<config>& grid, const evaluation& ev, const ltc::ltc_table& lobe1,
-                              const ltc::ltc_table& lobe2) {
+                              const ltc::ltc_table& lobe2, bool premultiplied = false) {
     const fetch_fn f1 = [&](double c, double r) { return lobe1.fetch<double>(c, r); };
-    const fetch_fn f2 = [&](double c, double r) { return lobe2.fetch<double>(c, r); };
+    const fetch_fn f2 = [&](double c, double r) {
+        const auto l = lobe2.fetch<double>(c, r);
+        return premultiplied ? ltc::ggx_cosine_lobe::unpremultiplied(l) : l;
+    };
     evaluation e = evaluate(grid, f1, false);
     const evaluation e2 = evaluate(grid, f2, false);
     for (std::size_t i = 0; i < grid.size(); ++i) e.value[exact][i] += e2.value[exact][i];
@@ -170,7 +174,7 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
     print_row("two-lobe table", "-", grid,
               evaluate_two_lobes(grid, ev, ltc::ggx_two_lobe::lobe_table(0), ltc::ggx_two_lobe::lobe_table(1)));
     print_row("LTC+cosine table", "-", grid,
-              evaluate_two_lobes(grid, ev, ltc::ggx_cosine_lobe::lobe_table(0), ltc::ggx_cosine_lobe::lobe_table(1)));
+              evaluate_two_lobes(grid, ev, ltc::ggx_cosine_lobe::lobe_table(0), ltc::ggx_cosine_lobe::lobe_table(1), true));
     for (const std::string& name : objectives) {
         if (name == "cells") {
             double secs = 0;
@@ -202,7 +206,8 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
             char time[32];
             std::snprintf(time, sizeof time, "%.2fs", seconds_since(t0));
             const ltc::ltc_table lobe1(data.data(), fo.size, fo.size), lobe2(data.data() + data.size() / 2, fo.size, fo.size);
-            print_row(cosine ? "LTC+cosine, 32x32" : "two lobes, 32x32", time, grid, evaluate_two_lobes(grid, ev, lobe1, lobe2));
+            print_row(cosine ? "LTC+cosine, 32x32" : "two lobes, 32x32", time, grid,
+                      evaluate_two_lobes(grid, ev, lobe1, lobe2, cosine));
             continue;
         }
         ltc::fit::options fo;

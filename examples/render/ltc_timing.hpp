@@ -1,9 +1,10 @@
 // render/ltc_timing.hpp -- the LTC render of the polygonal lights, timed (each part the best of 5
 // runs: it takes milliseconds): point by point, and a row of pixels at a time through the batch
 // API (SIMD lanes), with the largest difference between the two; and the printed LTC times (with
-// the textured light's, by each method with --textured-method all). With --lobes 2 the point-by-
-// point render uses the two-lobe table and the batch part is left out (the batch API has the
-// one-lobe table only: its difference would be the second lobe's, not the batch's).
+// the textured light's, by each method with --textured-method all). With --lobes 2 or cosine the
+// point-by-point render uses that table and the batch part is left out (the batch render here
+// calls ltc::batch::shade_polygon_light, the one-lobe table: its difference would be the other
+// table's, not the batch's).
 #pragma once
 
 #include "camera.hpp"
@@ -48,7 +49,7 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
         });
         t.seconds = std::min(t.seconds, seconds_since(t0));
     }
-    if (lobes != 1) return t;  // the batch API has the one-lobe table only
+    if (lobes != 1) return t;  // the batch render is the one-lobe table's
     // The same polygonal lights a row of pixels at a time through the batch API (SIMD lanes).
     std::vector<dvec3> ltc_batch(count);
     for (int run = 0; run < 5; ++run) {
@@ -91,8 +92,8 @@ inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vect
     }
 
     if (t.lobes != 1)
-        std::printf("LTC render, batch: left out with%s (ltc::batch::shade_polygon_light has the one-lobe "
-                    "table only)\n",
+        std::printf("LTC render, batch: left out with%s (the batch render calls ltc::batch::shade_polygon_light, "
+                    "the one-lobe table)\n",
                     lobes_option(t.lobes));
     else
         std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light: %.1fx "

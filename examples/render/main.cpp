@@ -132,8 +132,9 @@
 // With --lobes 2 the LTC time, the reference / LTC ratio and the statistics of all lights and of
 // the polygonal lights alone (overall lines and per-tile means) are those of the two-lobe render:
 // a line after the scene's says so, and the LTC time and the headings say "polygonal lights with
-// two lobes"; the batch timing is left out (ltc::batch::shade_polygon_light has the one-lobe
-// table only: its difference to the point-by-point render would be the second lobe's). The
+// two lobes" (--lobes cosine: "with an LTC and the cosine"); the batch timing is left out (the
+// batch render calls ltc::batch::shade_polygon_light, the one-lobe table: its difference to the
+// point-by-point render would be the other table's). The
 // default run's lines are as they were before --lobes.
 // --shapes (shapes.hpp, shapes_render.hpp): after the rest, unchanged, a disk, a sphere and a tube
 // light alone on the floor: shapes_ltc.png, shapes_reference.png, shapes_error.png, statistics.

@@ -122,7 +122,7 @@ inline void print_help(const char* argv0) {
         "                   stay as they are (one lobe). The images keep their names (give another\n"
         "                   --out to keep both runs'); the LTC time, error images and statistics are\n"
         "                   then those of the two-lobe render, and the batch timing is left out\n"
-        "                   (ltc::batch::shade_polygon_light has the one-lobe table only). cosine:\n"
+        "                   (it calls ltc::batch::shade_polygon_light, the one-lobe table). cosine:\n"
         "                   the opt-in table of an LTC and the clamped cosine\n"
         "                   (ltc::shade_polygon_light_cosine_lobe: one LTC integral, as one lobe)\n"
         "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"

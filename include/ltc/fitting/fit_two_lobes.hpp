@@ -68,6 +68,10 @@
 namespace ltc {
 namespace fit {
 
+/// What the two lobes are: two free LTCs, or lobe 1 fixed at the clamped cosine about the normal
+/// (M_1 = I, its integral the form factor) and lobe 2 a free LTC.
+enum class two_lobe_model { two_ltcs, ltc_and_cosine };
+
 struct two_lobe_result {
     std::array<ltc_parameters, 2> lobes;               ///< in their rotated frame
     std::array<glm::dmat3, 2> m_inv{glm::dmat3(1.0), glm::dmat3(1.0)};  ///< M_i^-1 / M_i^-1[1][1]
@@ -77,6 +81,7 @@ struct two_lobe_result {
     double value = 0;                                  ///< the objective at the solution (before a lobe is dropped)
     int evaluations = 0;
     bool stalled = false;  ///< Nelder-Mead stopped on its first simplex in every round (a plateau)
+    two_lobe_model model = two_lobe_model::two_ltcs;
 };
 
 namespace detail {
@@ -170,10 +175,7 @@ nelder_mead_result<9> minimize_padded(const F& objective, const std::array<doubl
 using objective_edge_policy = edge_policy::polynomial_double;
 
 /// Where a two-lobe fit starts: both lobes (their axes are replaced by the node's average
-/// direction) and the second lobe's share.
-/// What the two lobes are: two free LTCs, or lobe 1 fixed at the clamped cosine about the normal
-/// (M_1 = I, its integral the form factor) and lobe 2 a free LTC.
-enum class two_lobe_model { two_ltcs, ltc_and_cosine };
+/// direction), the second lobe's share and the model.
 
 struct two_lobe_start {
     std::array<ltc_parameters, 2> lobes;
@@ -206,6 +208,7 @@ inline two_lobe_start start_from(const two_lobe_result& r) {
     two_lobe_start s;
     s.lobes = r.lobes;
     s.share = r.share;
+    s.model = r.model;
     return s;
 }
 
@@ -232,6 +235,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
         if (isotropic) p.m22 = p.m11, p.m13 = p.m31 = 0;
     }
     r.share = std::min(std::max(start.share, 1e-6), 1 - 1e-6);
+    r.model = start.model;
     const bool with_cosine = start.model == two_lobe_model::ltc_and_cosine;
     if (with_cosine) r.lobes[0] = ltc_parameters{}, refit_first = false;  // M_1 = I, about the normal
 
@@ -340,6 +344,7 @@ inline constexpr int two_lobe_default_size = 32;
 struct two_lobe_table {
     int size = 0;
     std::vector<two_lobe_result> nodes;
+    two_lobe_model model = two_lobe_model::two_ltcs;
 
     const two_lobe_result& at(int t, int a) const { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
 
@@ -347,19 +352,34 @@ struct two_lobe_table {
     /// floats): lobe l's normalized M_l^-1, and the magnitude and Fresnel term times its share
     /// ((1 - s) for lobe 1, s for lobe 2), so that each is an ordinary ltc_table and the shading
     /// is the sum of the two lobes' (the shares interpolate linearly, like the magnitude).
+    ///
+    /// With the model ltc_and_cosine, lobe 2's four M^-1 channels are premultiplied by its
+    /// magnitude channel (m s), which a lookup divides out again (ltc::ggx_cosine_lobe::fetch):
+    /// the bilinear lookup then weights each node's matrix by the LTC's share there. The optimal
+    /// split between the cosine and the LTC jumps between neighbouring nodes at rough, near-normal
+    /// views (roughness 0.77-0.87, theta_v below 30 deg: a node of 98% cosine and a flattened LTC
+    /// next to one of 9% cosine and an LTC close to the cosine), and the plain lookup there gave
+    /// the flattened matrix to half the magnitude: -37% on a light at the zenith (roughness 0.84,
+    /// theta_v 1.3 deg; tests/test_cosine_lobe.cpp). Subnormal values are flushed to 0.
     std::vector<float> packed() const {
+        const bool premultiply = model == two_lobe_model::ltc_and_cosine;
+        const auto flushed = [&](double x) {
+            const float f = float(x);
+            return premultiply && std::abs(f) < std::numeric_limits<float>::min() ? 0.0f : f;
+        };
         std::vector<float> d;
         d.reserve(2 * nodes.size() * channel::count);
         for (int l = 0; l < 2; ++l)
             for (const two_lobe_result& n : nodes) {
                 const glm::dmat3& m = n.m_inv[std::size_t(l)];
                 const double w = l == 0 ? 1 - n.share : n.share;
-                d.push_back(float(m[0][0]));
-                d.push_back(float(m[0][2]));
-                d.push_back(float(m[2][0]));
-                d.push_back(float(m[2][2]));
-                d.push_back(float(n.magnitude * w));
-                d.push_back(float(n.fresnel * w));
+                const double p = premultiply && l == 1 ? n.magnitude * w : 1.0;
+                d.push_back(flushed(m[0][0] * p));
+                d.push_back(flushed(m[0][2] * p));
+                d.push_back(flushed(m[2][0] * p));
+                d.push_back(flushed(m[2][2] * p));
+                d.push_back(flushed(n.magnitude * w));
+                d.push_back(flushed(n.fresnel * w));
             }
         return d;
     }
@@ -417,6 +437,7 @@ two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two
     const int n = opt.size;
     two_lobe_table tab;
     tab.size = n;
+    tab.model = model;
     tab.nodes.resize(std::size_t(n) * std::size_t(n));
     const double c0 = node_cos_theta(0, n, opt.cos_theta_min);
     const std::vector<node_result> one0 = fit_normal_incidence<Brdf>(opt);  // the one-lobe fits, for starts

@@ -162,7 +162,10 @@ inline std::string two_lobe_table_header_text(const std::string& brdf, const std
       << "// node t along u = sqrt(1 - cos theta_v) = t / " << (n - 1) << " (cos theta_v clamped to at least "
       << opt.cos_theta_min << ") and a along roughness = a / " << (n - 1) << ";\n"
       << "// channels m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] of M_l^-1 / M_l^-1[1][1], then the magnitude\n"
-      << "// and the Fresnel term times the lobe's share (1 - s, s). Look it up with ltc::" << name << "::fetch.\n"
+      << "// and the Fresnel term times the lobe's share (1 - s, s)"
+      << (with_cosine ? "; lobe 2's four m_inv channels premultiplied by its\n// magnitude channel. Subnormals flushed to 0"
+                      : "")
+      << (brdf == "ggx" ? ". Look it up with ltc::" + name + "::fetch.\n" : std::string(".\n"))
       << "#pragma once\n\n"
       << "namespace ltc {\n"
       << "namespace tables {\n\n"
