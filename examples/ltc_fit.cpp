@@ -203,7 +203,7 @@ int run(const arguments& args, const char* description) {
     if (args.lobes == 2) {
         const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(opt, args.model);
         const double seconds = bar.seconds();
-        if (!write_text(args.out, ltc::fit::two_lobe_table_header_text(args.brdf, description, tab, opt, args.model)))
+        if (!write_text(args.out, ltc::fit::two_lobe_table_header_text(args.brdf, description, tab, opt)))
             return 1;
         const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
         std::fprintf(args.out == "-" ? stderr : stdout, "ltc_fit: %s, %s, %d x %d nodes in %.2f s on %u thread%s%s%s\n",

@@ -453,6 +453,45 @@ TEST_CASE("two-lobe batch shading of many quad lights matches shade_polygon_ligh
     check_quad_lights(2);
 }
 
+TEST_CASE("quad-light batches: coordinates near FLT_MAX give finite results", "[batch][shading][bad_input]") {
+    // The fuzzer's input (tests/fuzz/fuzz_integrals.cpp): the differences p - P near FLT_MAX made
+    // the local frame's dot products overflow (NaN) until the batch divided them by their largest
+    // coordinate, as ltc::integrate_polygon_light does.
+    const float big = 3.40282347e+38f;
+    const glm::vec3 P(-6.6722e+36f, -big, -big), N(-big), V(-big), F0(0.04f), albedo(0.5f);
+    const glm::vec3 quad[4] = {{-7.60631128e+37f, -7.60631128e+37f, -big},
+                               {-big, -big, -big},
+                               {-3.40277256e+38f, -6.67220288e+36f, -1.76813407e+38f},
+                               {-big, -3.24331611e+38f, -big}};
+    constexpr std::size_t count = 17;
+    std::vector<float> v[15];
+    for (std::size_t j = 0; j < count; ++j) {
+        for (int k = 0; k < 4; ++k) v[k].push_back(quad[k].x), v[4 + k].push_back(quad[k].y), v[8 + k].push_back(quad[k].z);
+        for (int c = 0; c < 3; ++c) v[12 + c].push_back(1.0f);
+    }
+    ltc::batch::quad_lights<float> lights;
+    for (int k = 0; k < 4; ++k) lights.x[k] = v[k].data(), lights.y[k] = v[4 + k].data(), lights.z[k] = v[8 + k].data();
+    for (int c = 0; c < 3; ++c) lights.radiance[c] = v[12 + c].data();
+    for (const auto isa : ltc::batch::instruction_sets) {
+        if (!ltc::batch::available(isa)) continue;
+        for (int lobes = 1; lobes <= 3; ++lobes) {
+            results_soa out(count);
+            if (lobes == 1)
+                ltc::batch::shade_quad_lights<Policy>(P, N, V, 0.0f, F0, albedo, lights, ltc::sidedness::two_sided, out.view(),
+                                                      count, isa);
+            else if (lobes == 2)
+                ltc::batch::shade_quad_lights_two_lobe<Policy>(P, N, V, 0.0f, F0, albedo, lights, ltc::sidedness::two_sided,
+                                                               out.view(), count, isa);
+            else
+                ltc::batch::shade_quad_lights_cosine_lobe<Policy>(P, N, V, 0.0f, F0, albedo, lights,
+                                                                  ltc::sidedness::two_sided, out.view(), count, isa);
+            CAPTURE(static_cast<int>(isa), lobes);
+            for (const auto& c : out.c)
+                for (const float x : c) CHECK(std::isfinite(x));
+        }
+    }
+}
+
 TEST_CASE("LTC-and-cosine batch shading of many quad lights matches shade_polygon_light_cosine_lobe",
           "[batch][shading][cosine_lobe]") {
     check_quad_lights(3);

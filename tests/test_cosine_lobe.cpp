@@ -76,7 +76,10 @@ TEST_CASE("cosine-lobe shading: the form factor as the cosine's integral, the on
                 // within 20 u of the exact integral (at most 5 clipped edges, each term of size <= pi
                 // within 8 u, over 2 pi), times the cosine's Fresnel-weighted magnitude and the
                 // radiance; plus 2 u of the sum, which each side rounds once (measured: up to 2.4 u
-                // of the sum).
+                // of the sum). The exact integral of the re-clipped polygon differs from the first
+                // clip's by a vertex on the horizon moved by a few u: first order in that move, a few
+                // u of E (the edge terms' derivatives are bounded by pi at this size), inside these
+                // bounds.
                 const double eps = std::numeric_limits<double>::epsilon();
                 const dvec3 brdf_cosine = F0 * lobes[0].magnitude + (dvec3(1) - F0) * lobes[0].fresnel;
                 for (int c = 0; c < 3; ++c)

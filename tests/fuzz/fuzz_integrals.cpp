@@ -145,6 +145,33 @@ void run(FuzzedDataProvider& in) {
                 for (const auto& r : results)
                     for (const T x : r) require_finite(x, "batch GGX shading");
             }
+            // A quad light (the fuzzed polygon's first four vertices) 17 times over one point,
+            // through the quad-light batches of the three tables.
+            if (n >= 4) {
+                std::vector<T> q[15];
+                for (std::size_t j = 0; j < count; ++j) {
+                    for (int k = 0; k < 4; ++k)
+                        q[k].push_back(pv[k].x), q[4 + k].push_back(pv[k].y), q[8 + k].push_back(pv[k].z);
+                    for (int c = 0; c < 3; ++c) q[12 + c].push_back(T(1));
+                }
+                ltc::batch::quad_lights<T> lights;
+                for (int k = 0; k < 4; ++k) lights.x[k] = q[k].data(), lights.y[k] = q[4 + k].data(), lights.z[k] = q[8 + k].data();
+                for (int c = 0; c < 3; ++c) lights.radiance[c] = q[12 + c].data();
+                const vec3 F0(T(0.04)), albedo(T(0.5));
+                for (int lobes = 1; lobes <= 3; ++lobes) {
+                    if (lobes == 1)
+                        ltc::batch::shade_quad_lights(P, N, V, roughness, F0, albedo, lights, ltc::sidedness::two_sided, out,
+                                                      count, isa);
+                    else if (lobes == 2)
+                        ltc::batch::shade_quad_lights_two_lobe(P, N, V, roughness, F0, albedo, lights,
+                                                               ltc::sidedness::two_sided, out, count, isa);
+                    else
+                        ltc::batch::shade_quad_lights_cosine_lobe(P, N, V, roughness, F0, albedo, lights,
+                                                                  ltc::sidedness::two_sided, out, count, isa);
+                    for (const auto& r : results)
+                        for (const T x : r) require_finite(x, "quad-light batch GGX shading");
+                }
+            }
         }
     }
 

@@ -70,7 +70,8 @@ inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7]
 
 /// The shading kernel of `which` alone: points [0, returned) written, NaN in specular red where
 /// it hands a point back to the scalar function; lobe l's coefficients from tables[l] (with
-/// Cosine, tables[0] the cosine lobe's, integrated as the form factor).
+/// Cosine, tables[0] the cosine lobe's, integrated as the form factor, tables[1] the LTC's,
+/// premultiplied).
 template <typename Policy, int Lobes, bool Cosine = false>
 std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
                            const ltc::batch::shading_points<float>& points,

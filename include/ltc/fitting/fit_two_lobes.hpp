@@ -176,7 +176,6 @@ using objective_edge_policy = edge_policy::polynomial_double;
 
 /// Where a two-lobe fit starts: both lobes (their axes are replaced by the node's average
 /// direction), the second lobe's share and the model.
-
 struct two_lobe_start {
     std::array<ltc_parameters, 2> lobes;
     double share = 0.2;
@@ -350,8 +349,9 @@ struct two_lobe_table {
 
     /// Two tables of the layout of ltc/shading/table.hpp, one after the other (2 size^2 6
     /// floats): lobe l's normalized M_l^-1, and the magnitude and Fresnel term times its share
-    /// ((1 - s) for lobe 1, s for lobe 2), so that each is an ordinary ltc_table and the shading
-    /// is the sum of the two lobes' (the shares interpolate linearly, like the magnitude).
+    /// ((1 - s) for lobe 1, s for lobe 2), so that (with two_ltcs) each is an ordinary ltc_table
+    /// and the shading is the sum of the two lobes' (the shares interpolate linearly, like the
+    /// magnitude).
     ///
     /// With the model ltc_and_cosine, lobe 2's four M^-1 channels are premultiplied by its
     /// magnitude channel (m s), which a lookup divides out again (ltc::ggx_cosine_lobe::fetch):
@@ -360,7 +360,9 @@ struct two_lobe_table {
     /// views (roughness 0.77-0.87, theta_v below 30 deg: a node of 98% cosine and a flattened LTC
     /// next to one of 9% cosine and an LTC close to the cosine), and the plain lookup there gave
     /// the flattened matrix to half the magnitude: -37% on a light at the zenith (roughness 0.84,
-    /// theta_v 1.3 deg; tests/test_cosine_lobe.cpp). Subnormal values are flushed to 0.
+    /// theta_v 1.3 deg; tests/test_cosine_lobe.cpp). Subnormal values are flushed to 0, and a
+    /// lobe whose magnitude channel flushes to 0 stores a zero matrix too (so that every lookup
+    /// stays a convex combination of the nodes' matrices).
     std::vector<float> packed() const {
         const bool premultiply = model == two_lobe_model::ltc_and_cosine;
         const auto flushed = [&](double x) {
@@ -373,7 +375,8 @@ struct two_lobe_table {
             for (const two_lobe_result& n : nodes) {
                 const glm::dmat3& m = n.m_inv[std::size_t(l)];
                 const double w = l == 0 ? 1 - n.share : n.share;
-                const double p = premultiply && l == 1 ? n.magnitude * w : 1.0;
+                const bool dead = premultiply && l == 1 && flushed(n.magnitude * w) == 0.0f;
+                const double p = dead ? 0.0 : premultiply && l == 1 ? n.magnitude * w : 1.0;
                 d.push_back(flushed(m[0][0] * p));
                 d.push_back(flushed(m[0][2] * p));
                 d.push_back(flushed(m[2][0] * p));

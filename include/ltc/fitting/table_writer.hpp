@@ -130,13 +130,13 @@ inline std::string table_header_text(const std::string& brdf, const std::string&
 /// The text of ltc/tables/<brdf>_two_lobe.hpp for the two-lobe table `tab` fitted with `opt`
 /// (ltc/fitting/fit_two_lobes.hpp): two tables of the layout of ltc/shading/table.hpp, one per
 /// lobe, each lobe's magnitude and Fresnel term multiplied by its share. For the model
-/// ltc_and_cosine, ltc/tables/<brdf>_cosine_lobe.hpp, lobe 1 the cosine (m_inv = I).
+/// ltc_and_cosine (tab.model), ltc/tables/<brdf>_cosine_lobe.hpp: lobe 1 the cosine (m_inv = I),
+/// lobe 2's m_inv premultiplied (two_lobe_table::packed).
 inline std::string two_lobe_table_header_text(const std::string& brdf, const std::string& description,
-                                              const two_lobe_table& tab, const options& opt,
-                                              two_lobe_model model = two_lobe_model::two_ltcs) {
+                                              const two_lobe_table& tab, const options& opt) {
     const int n = tab.size;
     const std::vector<float> data = tab.packed();
-    const bool with_cosine = model == two_lobe_model::ltc_and_cosine;
+    const bool with_cosine = tab.model == two_lobe_model::ltc_and_cosine;
     const std::string name = brdf + (with_cosine ? "_cosine_lobe" : "_two_lobe");
     std::ostringstream o;
     char line[256];
@@ -150,7 +150,7 @@ inline std::string two_lobe_table_header_text(const std::string& brdf, const std
       << "// BRDF: " << description << ",\n"
       << "// no Fresnel (factored out, see the fresnel channel); alpha = max(roughness^2, " << opt.alpha_min << ").\n"
       << (with_cosine ? "// One LTC and the clamped cosine: rho cos ~= magnitude ((1 - s) D_1 + s D_2), D_1 the clamped cosine about\n"
-                        "// the normal (M_1 = I, stored so that any two-lobe lookup serves it), D_2 the LTC of M_2 (ltc/fitting/\n"
+                        "// the normal (M_1 = I), D_2 the LTC of M_2 (ltc/fitting/\n"
                         "// fit_two_lobes.hpp, model ltc_and_cosine:\n"
                       : "// Two lobes: rho cos ~= magnitude ((1 - s) D_1 + s D_2), D_l the LTC of M_l (ltc/fitting/fit_two_lobes.hpp:\n")
       << "// the integral objective of the mixture plus its squared relative L3 distance, MIS over "

@@ -184,11 +184,25 @@ void shade_quad_lights_lobes(const glm::vec<3, T>& P, const shading_frame<T>& fr
         }
         for (std::size_t j = 0; j < b; ++j) {
             const vec3 radiance = item(lights.radiance, base + j);
+            T e = E[j], i0 = I[0][j], i1 = count_lobes > 1 ? I[1][j] : T(0);
+            const T sum = e + i0 + i1;  // each at most about 1 in size: inf or NaN only from a non-finite term
+            if (!(sum - sum == T(0))) {
+                // Local coordinates whose products overflow (differences near FLT_MAX: a NaN the
+                // fuzzer found): the light again through ltc::integrate_polygon_light, which
+                // divides each difference by its largest coordinate (only directions count).
+                vec3 quad[4];
+                for (std::size_t k = 0; k < 4; ++k)
+                    quad[k] = vec3(lights.x[k][base + j], lights.y[k][base + j], lights.z[k][base + j]);
+                const polygon_light_integrals<T> first = integrate_polygon_light<Policy>(frame, lobes[0].m_inv, P, quad, 4);
+                e = apply_sidedness(first.form_factor, side), i0 = apply_sidedness(first.ltc, side);
+                if (count_lobes > 1)
+                    i1 = apply_sidedness(integrate_polygon_light<Policy>(frame, lobes[1].m_inv, P, quad, 4).ltc, side);
+            }
             polygon_light_result<T> r;
-            r.specular = radiance * brdf[0] * I[0][j];
-            if (count_lobes > 1) r.specular += radiance * brdf[1] * I[1][j];
-            if (cosine) r.specular += radiance * brdf_cosine * E[j];
-            r.diffuse = albedo * radiance * E[j];
+            r.specular = radiance * brdf[0] * i0;
+            if (count_lobes > 1) r.specular += radiance * brdf[1] * i1;
+            if (cosine) r.specular += radiance * brdf_cosine * e;
+            r.diffuse = albedo * radiance * e;
             write(out, base + j, r);
         }
     }

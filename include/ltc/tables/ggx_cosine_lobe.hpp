@@ -6,7 +6,7 @@
 // BRDF: GGX microfacet NDF, Smith height-correlated masking-shadowing,
 // no Fresnel (factored out, see the fresnel channel); alpha = max(roughness^2, 0.0001).
 // One LTC and the clamped cosine: rho cos ~= magnitude ((1 - s) D_1 + s D_2), D_1 the clamped cosine about
-// the normal (M_1 = I, stored so that any two-lobe lookup serves it), D_2 the LTC of M_2 (ltc/fitting/
+// the normal (M_1 = I), D_2 the LTC of M_2 (ltc/fitting/
 // fit_two_lobes.hpp, model ltc_and_cosine:
 // the integral objective of the mixture plus its squared relative L3 distance, MIS over 32 x 32
 // BRDF and per-lobe samples, 2 rounds, Nelder-Mead tolerance 1e-05). The data are two tables of the layout of
