@@ -2,7 +2,7 @@
 // Heitz, Hill and McGuire 2018 and its unbiased companion, with a visibility callback.
 //   (a) nothing occludes: the ratio is exactly 1, so the result is the analytic shading bit for
 //       bit, for every sample plan and every K (with either analytic part, one or two lobes);
-//       each sample makes one query;
+//       each sample makes one query; each term's two sums are equal;
 //   (b) everything occludes: 0; a light facing away (one-sided) or degenerate input: 0 and no
 //       query;
 //   (c) a half-space occluder through the shading point (visible: d . m >= 0), whose visible part
@@ -11,6 +11,9 @@
 //       - the specular ratio estimates int_vis f / int_P f (f the GGX lobe), the unbiased
 //         estimate int_vis f (F0 = 1, so that Schlick's factor is 1), both against the
 //         library's Monte Carlo ground truth;
+//       - each term's two sums (ratio_estimates) estimate the integrals of f V and f: E(visible)
+//         and E(light), the GGX lobe's integrals over the visible part and the light (ground
+//         truth);
 //       for four sample plans (plan_options: the LTC share by rejection or exactly, the diffuse
 //       share from the area or the exact cosine sampler, area alone). Tolerances: 4 standard errors of the mean over R independent
 //       Cranley-Patterson shifts (sigma from the spread of the R results) and of the ground
@@ -131,12 +134,25 @@ TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly
             }
             CHECK(r.ratio.specular == r.unshadowed.specular);
             CHECK(r.ratio.diffuse == r.unshadowed.diffuse);
+            // Every sample seen: the two sums of each term are the same sum.
+            CHECK(r.specular_estimates.shadowed == r.specular_estimates.unshadowed);
+            CHECK(r.diffuse_estimates.shadowed == r.diffuse_estimates.unshadowed);
+            CHECK(r.specular_estimates.unshadowed + r.diffuse_estimates.unshadowed > 0.0f);
             // K queries, or a random number of hits averaging K_s where the specular share is
             // drawn by rejection (at most 8 K_s draws).
             CHECK(r.rays == calls);
             CHECK(r.rays >= 1);
             CHECK(r.rays <= 8 * K);
         }
+}
+
+TEST_CASE("shadowed polygon light: ratio_shading from a term's two estimates", "[shadows]") {
+    const glm::vec3 unshadowed(0.5f, 0.25f, 2.0f);
+    CHECK(ltc::ratio_shading(unshadowed, ltc::ratio_estimates<float>{0.25f, 1.0f}) == 0.25f * unshadowed);
+    CHECK(ltc::ratio_shading(unshadowed, ltc::ratio_estimates<float>{3.0f, 3.0f}) == unshadowed);
+    CHECK(ltc::ratio_shading(unshadowed, ltc::ratio_estimates<float>{0.0f, 2.0f}) == glm::vec3(0.0f));
+    // No sample carried weight: the analytic term.
+    CHECK(ltc::ratio_shading(unshadowed, ltc::ratio_estimates<float>{}) == unshadowed);
 }
 
 TEST_CASE("shadowed polygon light: occluded, facing away and degenerate input", "[shadows]") {
@@ -151,6 +167,9 @@ TEST_CASE("shadowed polygon light: occluded, facing away and degenerate input", 
         CHECK(r.ratio.diffuse == glm::vec3(0.0f));
         CHECK(r.unbiased.specular == glm::vec3(0.0f));
         CHECK(r.unbiased.diffuse == glm::vec3(0.0f));
+        CHECK(r.specular_estimates.shadowed == 0.0f);
+        CHECK(r.diffuse_estimates.shadowed == 0.0f);
+        CHECK(r.specular_estimates.unshadowed + r.diffuse_estimates.unshadowed > 0.0f);
         // Reversed winding: the one-sided light faces away.
         const glm::vec3 back[4] = {s.light[3], s.light[2], s.light[1], s.light[0]};
         int calls = 0;
@@ -225,6 +244,23 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         const double want = kRadiance.x * t_vis.mean;
         CHECK(std::abs(unbiased.mean - want) <=
               4 * std::hypot(unbiased.error, kRadiance.x * t_vis.standard_error) + 1e-4 * want);
+        // The two sums of each term, unbiased estimates of the integrals of f V and f over the
+        // light: the diffuse ones of E(visible) and E(light) (f = cos / pi), the specular ones of
+        // the GGX lobe's integrals (the ground truth's f).
+        const auto estimates = [&](bool specular, bool shadowed) {
+            return over_shifts(R, [&](glm::vec2 u) {
+                const auto r = run(u);
+                const ltc::ratio_estimates<float>& e = specular ? r.specular_estimates : r.diffuse_estimates;
+                return double(shadowed ? e.shadowed : e.unshadowed);
+            });
+        };
+        const auto within = [](const mean_and_error& x, double want, double want_error) {
+            return std::abs(x.mean - want) <= 4 * std::hypot(x.error, want_error) + 1e-4 * want;
+        };
+        CHECK(within(estimates(false, true), e_vis, 0.0));
+        CHECK(within(estimates(false, false), e_all, 0.0));
+        CHECK(within(estimates(true, true), t_vis.mean, t_vis.standard_error));
+        CHECK(within(estimates(true, false), t_all.mean, t_all.standard_error));
         if (plan == 2) {
             // Exact samplers: the diffuse ratio's spread is the lattice's and the lobes' mismatch,
             // below a binomial's sqrt(p (1 - p) / K) ~ 0.016.

@@ -2,7 +2,7 @@
 // and any matrix accepted by the checked factory, every integral, density and sample of the
 // library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness, with one
 // or two lobes, point by point and in batches (every instruction set this CPU runs), and with
-// shadows (the ratio estimator, any sample plan); the
+// shadows (the ratio estimator and its two sums per term, any sample plan); the
 // batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
 // CPU runs) agrees with the scalar path; and the textured lights (fuzz_textured.hpp: tiny
 // textures, the exact cell integrals with fuzzed budgets and tolerances, textured shading with
@@ -192,6 +192,10 @@ void run(FuzzedDataProvider& in) {
         for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {
             require_finite(t->specular, "shadowed specular");
             require_finite(t->diffuse, "shadowed diffuse");
+        }
+        for (const auto* e : {&r.specular_estimates, &r.diffuse_estimates}) {
+            require_finite(e->shadowed, "shadowed estimate");
+            require_finite(e->unshadowed, "unshadowed estimate");
         }
     }
 

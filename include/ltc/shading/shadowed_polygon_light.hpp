@@ -52,11 +52,14 @@
 //
 // Outputs: `unshadowed` (= shade_polygon_light or shade_polygon_light_two_lobe, horizon clipping
 // ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
-// light) and `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
-// same samples and
-// visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of
-// the LTC's fitting error). A light that faces away (one-sided) or lies below the horizon gives 0
-// and makes no queries; K = 0 gives the analytic result.
+// light), `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
+// same samples and visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's
+// noise instead of the LTC's fitting error), and per term the ratio's two sums
+// (`specular_estimates`, `diffuse_estimates`), for renderers that denoise the shadows as Heitz et
+// al. do: filter each of the two over neighbouring pixels, then ltc::ratio_shading, so that the
+// filter blurs the visibility only, never the analytic shading. A light that faces away
+// (one-sided) or lies below the horizon gives 0 and makes no queries; K = 0 gives the analytic
+// result.
 //
 // Visibility callback: bool visible(origin, unit direction, distance), all world space, the
 // distance measured to the light's plane along the direction; offset origin and distance by the
@@ -98,13 +101,36 @@ struct shadow_options {
     analytic_lobes lobes = analytic_lobes::one;
 };
 
+/// One term's two Monte Carlo estimates over the same samples (the balance heuristic's sums,
+/// sum_k f(w_k) [V(w_k)] / sum_j n_j p_j(w_k)): unbiased estimates of the integrals over the light
+/// of f V (`shadowed`) and of f (`unshadowed`), f the term's BRDF without Fresnel and radiance.
+/// Their ratio is the result's visibility ratio (1 where both are 0). A renderer that denoises
+/// shadows filters the two over neighbouring pixels separately and takes the ratio of the filtered
+/// values (Heitz et al. 2018: the noise is then blurred in the shadows only, never in the
+/// analytic shading): ltc::ratio_shading.
+template <typename T>
+struct ratio_estimates {
+    T shadowed{0};
+    T unshadowed{0};
+};
+
 template <typename T>
 struct shadowed_polygon_light_result {
     polygon_light_result<T> unshadowed;  ///< analytic LTC, no visibility
     polygon_light_result<T> ratio;       ///< Heitz et al. 2018's ratio estimator
     polygon_light_result<T> unbiased;    ///< Monte Carlo of the true BRDF with the same samples
+    ratio_estimates<T> specular_estimates, diffuse_estimates;  ///< the ratio's two sums per term
     std::size_t rays = 0;                ///< visibility queries made
 };
+
+/// The ratio estimator's result from an analytic term and the two estimates of its visibility
+/// ratio (Heitz et al. 2018, eq. 4): unshadowed * shadowed / unshadowed_estimate, the analytic
+/// term itself where the estimate of the unshadowed integral is not positive (no sample carried
+/// weight). Takes filtered (denoised) estimates as well as one pixel's.
+template <typename T>
+LTC_HOST_DEVICE inline glm::vec<3, T> ratio_shading(const glm::vec<3, T>& unshadowed, const ratio_estimates<T>& e) {
+    return e.unshadowed > T(0) ? unshadowed * (e.shadowed / e.unshadowed) : unshadowed;
+}
 
 namespace detail {
 
@@ -127,8 +153,7 @@ struct ratio_sums {
         visible += f_over_p;
         unbiased += f_over_p * fresnel;
     }
-    /// The visibility ratio: 1 (the analytic result) when no sample carried weight.
-    LTC_HOST_DEVICE T ratio() const { return weights > T(0) ? visible / weights : T(1); }
+    LTC_HOST_DEVICE ratio_estimates<T> estimates() const { return {visible, weights}; }
 };
 
 }  // namespace detail
@@ -259,8 +284,10 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         }
     }
 
-    r.ratio.specular = r.unshadowed.specular * spec.ratio();
-    r.ratio.diffuse = r.unshadowed.diffuse * diff.ratio();
+    r.specular_estimates = spec.estimates();
+    r.diffuse_estimates = diff.estimates();
+    r.ratio.specular = ratio_shading(r.unshadowed.specular, r.specular_estimates);
+    r.ratio.diffuse = ratio_shading(r.unshadowed.diffuse, r.diffuse_estimates);
     r.unbiased.specular = radiance * spec.unbiased;
     r.unbiased.diffuse = albedo * radiance * diff.visible;
     return r;
