@@ -2,8 +2,9 @@
 // ratio-estimator shadows (ltc::shade_polygon_light_shadowed) against plain Monte Carlo.
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
-//           [--mis-spp LIST] [--reference-spp N] [--threads K] [--out DIR] [--seed S]
-//           [--exposure E] [--lobes 1|2] [--help]
+//           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST] [--denoise-radius R]
+//           [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E] [--lobes 1|2]
+//           [--help]
 //
 // The scene (z up; scene.hpp), every surface triangles of one Embree scene (tracer.hpp): a floor
 // of unit tiles, GGX dielectrics (F0 = 0.04, Lambertian albedo 0.5) of roughness 0.15, 0.3 and
@@ -31,10 +32,20 @@
 //   (c)  mis         plain Monte Carlo with MIS: per iteration one BRDF sample (GGX visible
 //                    normals, or the cosine lobe) and one light-area sample, balance heuristic,
 //                    of GGX with Schlick's Fresnel plus Lambert: the BRDF the LTC approximates
-//                    (shade_mis.hpp).
+//                    (shade_mis.hpp);
+//   (d)  ratio_ltc_denoised  (a), then its two Monte Carlo estimates per term (ltc::ratio_estimates)
+//                    filtered over neighbouring pixels, each on its own, and the ratio of the
+//                    filtered values applied to the pixel's analytic terms (ltc::ratio_shading):
+//                    Heitz, Hill and McGuire's denoising, which blurs the shadows, not the shading;
+//   (e)  mis_denoised  (c), then its radiance filtered with the same weights: the same denoiser on
+//                    plain Monte Carlo, so that (d) is compared with a denoised baseline too.
+//                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma R / 2
+//                    pixels (--denoise-radius R, default 4), on the centre pixel's surface only
+//                    (kind, material, normal, plane), timed with the shading. (d) and (e) draw
+//                    (a)'s and (c)'s random numbers.
 // With --lobes 2, (a), (a+) and (b) take their analytic part from the opt-in two-lobe GGX table
 // (ltc::analytic_lobes::two); their samples, (c) and the reference do not change.
-// "spp" is K for (a), (a+) and (b) and the iterations of (c): per pixel, (a) and (b) cast up to K
+// "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a) and (b) cast up to K
 // shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) up to K shadow and K BRDF rays
 // (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
 // direct lighting only, since the light is the only emitter and the floor's inter-reflection is
@@ -54,25 +65,26 @@
 // Written into --out (default: the current directory), tone mapped as render's images are
 // (exposure, ACES filmic curve, sRGB):
 //   reference.png         the reference
-//   M_Nspp.png            M = ratio_ltc, ratio_ltc_adaptive, ratio_area, mis; N = 1, 4, 16 (those
-//                         in the lists)
+//   M_Nspp.png            M = ratio_ltc, ratio_ltc_adaptive, ratio_area, mis, ratio_ltc_denoised,
+//                         mis_denoised; N = 1, 4, 16 (those in the lists)
 //   error_M_4spp.png      |Y - Y_ref| / max(Y_ref, floor) in false colour (measure.hpp), over the
 //                         floor and the occluders
 //   error_vs_time.csv     method, spp, seconds, mean relative error, relative RMSE, rays per
 //                         pixel, CPU seconds, mean signed error, and the three errors over the
 //                         dielectric and over the gold tiles, for every spp of the lists (default
-//                         1 .. 64 for (a) and (a+), 1 .. 256 for (b) and (c));
+//                         1 .. 64 for (a), (a+) and (d), 1 .. 256 for (b), (c) and (e));
 //                         plot_error_vs_time.py draws error_vs_time.png from it
 // Printed: the reference's time and its relative standard error; three tables, over all the floor
 // pixels, over the dielectric tiles and over the gold tiles, of each method and spp: the shading
 // time of the whole image (wall clock on --threads threads, the reference's excluded, and the CPU
 // time of the same runs: measure.hpp), rays per pixel and the errors (mean of |e| and RMS of e,
 // e = (Y - Y_ref) / max(Y_ref, 0.01 / exposure) of luminance, and mean signed e); the equal-time
-// ratios error(a)/error(x), error(b)/error(x), error(c)/error(x) at the times of x = (a) and
-// x = (a+) for K = 1, 4, 16, over all the floor by wall clock and by CPU time, over each material
-// by CPU time (report.hpp); and (a)'s and (a+)'s errors split into noise and bias by a second
-// render with other seeds at K = 1, 4, 16, with (a+)'s shift from (a).
-// The default run takes about 35 s on 2 idle cores (55 s of CPU time), most of it the reference.
+// ratios error(a)/error(x), error(b)/error(x), error(c)/error(x), error(e)/error(x) at the times
+// of x = (a), (a+) and (d) for K = 1, 4, 16, over all the floor by wall clock and by CPU time,
+// over each material by CPU time (report.hpp); and (a)'s, (a+)'s and (d)'s errors split into
+// noise and bias by a second render with other seeds at K = 1, 4, 16, with (a+)'s and (d)'s shift
+// from (a) (the early stop's and the filter's bias).
+// The default run takes about 40 s on 2 idle cores (75 s of CPU time), most of it the reference.
 // Exit status 0, 1 if a file could not be written, Embree failed or a value was not finite, 2
 // for bad arguments.
 //
@@ -148,7 +160,7 @@ int main(int argc, char** argv) {
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr
     const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
-                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 1, "reference");
+                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 0, 1, "reference");
     std::size_t nonfinite = ref.nonfinite;
     const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
     std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "
@@ -159,13 +171,16 @@ int main(int argc, char** argv) {
     // The sweep.
     std::vector<sweep_row> rows;
     std::vector<std::uint8_t> rgb(hits.size() * 3);
-    std::vector<seed_pair> pairs;  // (a) and (a+) at K = 1, 4, 16, for their noise below
-    const std::vector<int>* lists[] = {&opt.spp, &opt.adaptive_spp, &opt.area_spp, &opt.mis_spp};
-    const method methods[] = {method::ratio_ltc, method::ratio_ltc_adaptive, method::ratio_area, method::mis};
-    for (int k = 0; k < 4; ++k) {
+    std::vector<seed_pair> pairs;  // (a), (a+) and (d) at K = 1, 4, 16, for their noise below
+    const std::vector<int>* lists[] = {&opt.spp,     &opt.adaptive_spp, &opt.area_spp,
+                                       &opt.mis_spp, &opt.denoised_spp, &opt.denoised_mis_spp};
+    const method methods[] = {method::ratio_ltc, method::ratio_ltc_adaptive, method::ratio_area,
+                              method::mis,       method::ratio_ltc_denoised, method::mis_denoised};
+    for (int k = 0; k < 6; ++k) {
         const method m = methods[k];
         for (int spp : *lists[k]) {
-            const method_image r = render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes);
+            const method_image r =
+                render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.denoise_radius);
             nonfinite += r.nonfinite;
             const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
             const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
@@ -173,7 +188,8 @@ int main(int argc, char** argv) {
             if (spp == 4) ok = ltc_examples::write_png(out_dir / ("error_" + stem + ".png"), W, H, rgb) && ok;
             if (spp != 1 && spp != 4 && spp != 16) continue;
             ok = write_image(out_dir / (stem + ".png"), r.img, W, H, opt.exposure) && ok;
-            if (m == method::ratio_ltc || m == method::ratio_ltc_adaptive) pairs.push_back({m, spp, r.img, {}});
+            if (m == method::ratio_ltc || m == method::ratio_ltc_adaptive || m == method::ratio_ltc_denoised)
+                pairs.push_back({m, spp, r.img, {}});
         }
     }
     ok = write_csv(out_dir / "error_vs_time.csv", rows) && ok;
@@ -181,10 +197,10 @@ int main(int argc, char** argv) {
     print_equal_time(rows, false, region::floor);
     for (region g : regions) print_equal_time(rows, true, g);
 
-    // (a)'s and (a+)'s errors split into their noise and bias: a second render of each with other seeds.
+    // (a)'s, (a+)'s and (d)'s errors split into their noise and bias: a second render of each with other seeds.
     for (seed_pair& p : pairs) {
-        const method_image second =
-            render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp, mix_seed(opt.seed, 0x5EEDu), opt.lobes, 1);
+        const method_image second = render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp,
+                                                  mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.denoise_radius, 1);
         p.second = second.img;
         nonfinite += second.nonfinite;
     }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/cli.hpp"
+#include "denoise.hpp"
 
 #include <ltc/shading/shadowed_polygon_light.hpp>
 
@@ -20,6 +21,9 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> adaptive_spp{1, 2, 4, 8, 16, 32, 64};        // (a+): K (after K0 = min(K, 4))
     std::vector<int> area_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (b): K (cheaper: a longer sweep)
     std::vector<int> mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};   // (c): iterations
+    std::vector<int> denoised_spp{1, 2, 4, 8, 16, 32, 64};        // (d): K
+    std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
+    int denoise_radius = default_denoise_radius;  // (d) and (e): the filter's half-width in pixels
     int reference_spp = 4096;  // (c)'s iterations for the reference
     ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b): the analytic part's table
 };
@@ -27,22 +31,26 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
 inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]\n"
-        "          [--mis-spp LIST] [--reference-spp N] [--threads K] [--out DIR] [--seed S]\n"
+        "          [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]\n"
+        "          [--denoise-radius R] [--reference-spp N] [--threads K] [--out DIR] [--seed S]\n"
         "          [--exposure E] [--lobes 1|2] [--help]\n"
         "\n"
         "Renders a tiled GGX floor (dielectric and gold tiles) and two grey occluders lit by one quad\n"
-        "light, with shadows traced by Embree, four ways: (a) LTC + ratio-estimator shadows\n"
+        "light, with shadows traced by Embree, six ways: (a) LTC + ratio-estimator shadows\n"
         "(ltc::shade_polygon_light_shadowed), K samples in all split between the LTC restricted to\n"
         "the light and the light's area, MIS-combined; (a+) the same, stopping after K0 = min(K, 4) samples\n"
         "where they all agree (lit or in umbra), else K more; (b) the same ratio sampling the light's\n"
         "area; (c) plain Monte Carlo with MIS (one GGX-or-cosine and one light sample per\n"
-        "iteration); the reference is (c) at --reference-spp. Writes into DIR: reference.png;\n"
-        "M_Nspp.png for each method M (ratio_ltc, ratio_ltc_adaptive, ratio_area, mis) and N = 1, 4,\n"
-        "16 (those in the lists); error_M_4spp.png (relative error of luminance, 0%% dark blue ..\n"
-        "20%%+ red); error_vs_time.csv (every method and spp: shading seconds, errors over all the\n"
-        "floor, its dielectric and its gold tiles; plot_error_vs_time.py draws it). Prints the\n"
-        "tables (all floor, dielectric, gold), the equal-time error ratios and the noise and bias of\n"
-        "(a) and (a+).\n"
+        "iteration); (d) (a) with its two estimates per term denoised by a cross-bilateral filter\n"
+        "(Heitz et al. 2018's denoising: the shadows blurred, not the shading); (e) (c) with the\n"
+        "same filter on its radiance. The reference is (c) at --reference-spp. Writes into DIR:\n"
+        "reference.png; M_Nspp.png for each method M (ratio_ltc, ratio_ltc_adaptive, ratio_area,\n"
+        "mis, ratio_ltc_denoised, mis_denoised) and N = 1, 4, 16 (those in the lists);\n"
+        "error_M_4spp.png (relative error of luminance, 0%% dark blue .. 20%%+ red);\n"
+        "error_vs_time.csv (every method and spp: shading seconds, errors over all the floor, its\n"
+        "dielectric and its gold tiles; plot_error_vs_time.py draws it). Prints the tables (all\n"
+        "floor, dielectric, gold), the equal-time error ratios and the noise and bias of (a), (a+)\n"
+        "and (d).\n"
         "\n"
         "  --width W           image width (default 320)\n"
         "  --height H          image height (default 200)\n"
@@ -51,6 +59,10 @@ inline void print_help(const char* argv0) {
         "                      (default 1,2,4,...,64)\n"
         "  --area-spp LIST     K of (b), up to K rays (default 1,2,4,...,256)\n"
         "  --mis-spp LIST      iterations of (c), up to 2 rays each (default 1,2,4,...,256)\n"
+        "  --denoised-spp LIST K of (d) (default 1,2,4,...,64)\n"
+        "  --denoised-mis-spp LIST\n"
+        "                      iterations of (e) (default 1,2,4,...,256)\n"
+        "  --denoise-radius R  (d)'s and (e)'s filter: 2 R + 1 taps per pass, 0 none (default 4)\n"
         "  --reference-spp N   iterations of the reference (default 4096)\n"
         "  --lobes 1|2         the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
         "                      (default) or the two-lobe table (ltc::analytic_lobes::two); the samples\n"
@@ -62,7 +74,7 @@ inline void print_help(const char* argv0) {
         "  --exposure E        linear exposure before the tone curve (default 1)\n"
         "  --help              this text\n"
         "\n"
-        "The default run takes about 35 s on 2 idle cores (55 s of CPU time).\n",
+        "The default run takes about 40 s on 2 idle cores (75 s of CPU time).\n",
         argv0);
 }
 
@@ -92,11 +104,18 @@ inline int parse_args(int argc, char** argv, options& o) {
                                  : a == "--adaptive-spp" ? &o.adaptive_spp
                                  : a == "--area-spp"     ? &o.area_spp
                                  : a == "--mis-spp"      ? &o.mis_spp
+                                 : a == "--denoised-spp" ? &o.denoised_spp
+                                 : a == "--denoised-mis-spp" ? &o.denoised_mis_spp
                                                          : nullptr;
         if (list != nullptr) return parse_list(v.text, 1 << 20, *list) ? option_status::taken : option_status::bad;
         if (a == "--lobes") {
             if (!v.integer_in(1, 2)) return option_status::bad;
             o.lobes = v.number == 2 ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+            return option_status::taken;
+        }
+        if (a == "--denoise-radius") {
+            if (!v.integer_in(0, 64)) return option_status::bad;
+            o.denoise_radius = static_cast<int>(v.number);
             return option_status::taken;
         }
         if (a != "--reference-spp") return option_status::unknown;

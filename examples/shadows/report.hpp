@@ -1,11 +1,11 @@
 // shadows/report.hpp -- the sweep's results: error_vs_time.csv, the printed tables (the errors over
 // all the floor, over its dielectric tiles and over its gold tiles), the equal-time comparison, and
-// the noise and bias of (a) and (a+).
-// Equal time: at the time of (a) or (a+) with K samples, the errors of the other methods at that
-// same time, interpolated linearly in (log time, log error) between their measured spp (beyond
-// their range, extrapolated along the nearest segment's slope, marked ~); over all the floor by the
-// wall clock and by the CPU time (measure.hpp: the steadier one where other work shares the
-// cores), over each material by the CPU time. The time is always the whole image's.
+// the noise and bias of (a), (a+) and (d).
+// Equal time: at the time of (a), (a+) or (d) with K samples, the errors of (a), (b), (c) and (e)
+// at that same time, interpolated linearly in (log time, log error) between their measured spp
+// (beyond their range, extrapolated along the nearest segment's slope, marked ~); over all the
+// floor by the wall clock and by the CPU time (measure.hpp: the steadier one where other work
+// shares the cores), over each material by the CPU time. The time is always the whole image's.
 #pragma once
 
 #include "measure.hpp"
@@ -99,9 +99,10 @@ inline timed_error error_at_time(const std::vector<sweep_row>& rows, method whic
     return out;
 }
 
-/// The rows the comparison is made at: (a) and (a+) with K = 1, 4, 16.
+/// The rows the comparison is made at: (a), (a+) and (d) with K = 1, 4, 16.
 inline bool equal_time_anchor(const sweep_row& r) {
-    return (r.which == method::ratio_ltc || r.which == method::ratio_ltc_adaptive) &&
+    return (r.which == method::ratio_ltc || r.which == method::ratio_ltc_adaptive ||
+            r.which == method::ratio_ltc_denoised) &&
            (r.spp == 1 || r.spp == 4 || r.spp == 16);
 }
 
@@ -115,26 +116,30 @@ inline std::string cell(const timed_error& e, double x, bool percent, bool skip 
 
 inline void print_equal_time(const std::vector<sweep_row>& rows, bool cpu, region g) {
     if (std::none_of(rows.begin(), rows.end(), equal_time_anchor)) return;
-    std::printf("\nequal %s time, errors over %s: those of the others at the shading time of x = (a) or\n"
-                "(a+) with K samples (interpolated log-log in time; ~ extrapolated); ratios > 1: x is better\n",
+    std::printf("\nequal %s time, errors over %s: those of the others at the shading time of x = (a), (a+)\n"
+                "or (d) with K samples (interpolated log-log in time; ~ extrapolated); ratios > 1: x is better\n",
                 cpu ? "CPU" : "wall-clock", region_name(g));
-    std::printf("%-4s %4s %9s | %9s %10s %10s %10s | %7s %7s %7s | %9s %9s %9s\n", "x", "K", "seconds", "x |e|",
-                "(a) |e| ", "(b) |e| ", "(c) |e| ", "(a)/x ", "(b)/x ", "(c)/x ", "RMSE a/x ", "RMSE b/x ", "RMSE c/x ");
-    const method others[3] = {method::ratio_ltc, method::ratio_area, method::mis};
+    std::printf("%-4s %4s %9s | %9s %10s %10s %10s %10s | %7s %7s %7s %7s | %9s %9s %9s %9s\n", "x", "K", "seconds",
+                "x |e|", "(a) |e| ", "(b) |e| ", "(c) |e| ", "(e) |e| ", "(a)/x ", "(b)/x ", "(c)/x ", "(e)/x ",
+                "RMSE a/x ", "RMSE b/x ", "RMSE c/x ", "RMSE e/x ");
+    constexpr int columns = 4;
+    const method others[columns] = {method::ratio_ltc, method::ratio_area, method::mis, method::mis_denoised};
     for (const sweep_row& x : rows) {
         if (!equal_time_anchor(x)) continue;
         const double t = time_of(x, cpu), e = x.error[g].mean_rel, r = x.error[g].rel_rmse;
-        const bool self = x.which == method::ratio_ltc;  // (a) against itself: left out
-        timed_error mean[3], rmse[3];
-        for (int k = 0; k < 3; ++k) {
-            mean[k] = error_at_time(rows, others[k], g, t, cpu, false);
-            rmse[k] = error_at_time(rows, others[k], g, t, cpu, true);
+        std::string means, ratios, rmses;
+        for (int k = 0; k < columns; ++k) {
+            const bool self = x.which == others[k];  // (a) against itself: left out
+            const timed_error mean = error_at_time(rows, others[k], g, t, cpu, false);
+            const timed_error rmse = error_at_time(rows, others[k], g, t, cpu, true);
+            char c[3][48];
+            std::snprintf(c[0], sizeof c[0], " %10s", cell(mean, e, true, self).c_str());
+            std::snprintf(c[1], sizeof c[1], " %7s", cell(mean, e, false, self).c_str());
+            std::snprintf(c[2], sizeof c[2], " %9s", cell(rmse, r, false, self).c_str());
+            means += c[0], ratios += c[1], rmses += c[2];
         }
-        std::printf("%-4s %4d %9.4f | %8.2f%% %10s %10s %10s | %7s %7s %7s | %9s %9s %9s\n", method_label(x.which),
-                    x.spp, t, 100 * e, cell(mean[0], e, true, self).c_str(), cell(mean[1], e, true).c_str(),
-                    cell(mean[2], e, true).c_str(), cell(mean[0], e, false, self).c_str(), cell(mean[1], e, false).c_str(),
-                    cell(mean[2], e, false).c_str(), cell(rmse[0], r, false, self).c_str(),
-                    cell(rmse[1], r, false).c_str(), cell(rmse[2], r, false).c_str());
+        std::printf("%-4s %4d %9.4f | %8.2f%%%s |%s |%s\n", method_label(x.which), x.spp, t, 100 * e, means.c_str(),
+                    ratios.c_str(), rmses.c_str());
     }
 }
 
@@ -147,16 +152,17 @@ struct seed_pair {
 
 /// The noise and bias of each pair over the floor: the RMS of the per-pixel standard deviation
 /// (measure.hpp's relative_noise), and the bias sqrt(RMSE^2 - noise^2 - reference noise^2) (the
-/// LTC fit's and the ratio estimator's; for (a+) also the early stop's); for (a+), its shift from
-/// (a) at the same K, with the same random numbers (measure.hpp's relative_shift: the early stop's
-/// bias, and the change of the ratio estimator's own bias with the samples it averages).
+/// LTC fit's and the ratio estimator's; for (a+) also the early stop's, for (d) the filter's); for
+/// (a+) and (d), the shift from (a) at the same K, with the same random numbers (measure.hpp's
+/// relative_shift: the early stop's or the filter's bias, and the change of the ratio estimator's
+/// own bias with the samples it averages).
 inline void print_noise_bias(const std::vector<seed_pair>& pairs, const std::vector<pixel_hit>& hits,
                              const std::vector<dvec3>& ref, double floor, double reference_rms_noise) {
     if (pairs.empty()) return;
     std::printf("\nnoise and bias against the reference, over the floor, from two seeds: noise (RMS of the\n"
                 "per-pixel standard deviation), RMS bias (sqrt(RMSE^2 - noise^2 - reference RMS noise^2)),\n"
-                "mean signed error; for (a+), its shift from (a) at the same K and seeds (sqrt of the mean\n"
-                "product of the two seeds' differences, and the mean signed difference)\n");
+                "mean signed error; for (a+) and (d), the shift from (a) at the same K and seeds (sqrt of the\n"
+                "mean product of the two seeds' differences, and the mean signed difference)\n");
     std::printf("%-4s %4s %10s %10s %10s %10s %10s %12s | %10s %12s\n", "x", "K", "|e| seed1", "|e| seed2", "RMSE",
                 "noise", "RMS bias", "mean signed", "shift RMS", "shift signed");
     for (const seed_pair& p : pairs) {
@@ -171,7 +177,7 @@ inline void print_noise_bias(const std::vector<seed_pair>& pairs, const std::vec
         const auto a = std::find_if(pairs.begin(), pairs.end(), [&](const seed_pair& q) {
             return q.which == method::ratio_ltc && q.spp == p.spp;
         });
-        if (p.which != method::ratio_ltc_adaptive || a == pairs.end()) {
+        if (p.which == method::ratio_ltc || a == pairs.end()) {
             std::printf(" %10s %12s\n", "-", "-");
             continue;
         }

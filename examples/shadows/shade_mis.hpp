@@ -20,6 +20,7 @@
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/shading_frame.hpp>
+#include <ltc/shading/shadowed_polygon_light.hpp>
 
 #include <glm/glm.hpp>
 
@@ -40,6 +41,9 @@ struct shaded_pixel {
     dvec3 radiance{0.0};
     double luminance_variance = 0;  // of the estimate (the mean over the iterations)
     std::size_t rays = 0;           // visibility queries made
+    // The ratio methods' analytic terms and their two sums (for (d)'s filter: denoise.hpp).
+    dvec3 specular{0.0}, diffuse{0.0};
+    ltc::ratio_estimates<double> specular_estimates, diffuse_estimates;
 };
 
 /// Radiance towards the camera at one pixel by `iterations` MIS iterations (file comment).

@@ -33,13 +33,19 @@
 
 namespace shadows {
 
-enum class method { ratio_ltc, ratio_area, mis, ratio_ltc_adaptive };  // the values seed the renders
+// The values seed the renders; (d) and (e) draw (a)'s and (c)'s random numbers (measure.hpp).
+enum class method { ratio_ltc, ratio_area, mis, ratio_ltc_adaptive, ratio_ltc_denoised, mis_denoised };
+
+/// (d) and (e): a method whose pixels are filtered after shading (denoise.hpp).
+inline bool denoised(method m) { return m == method::ratio_ltc_denoised || m == method::mis_denoised; }
 
 inline const char* method_name(method m) {
     switch (m) {
         case method::ratio_ltc: return "ratio_ltc";
         case method::ratio_ltc_adaptive: return "ratio_ltc_adaptive";
         case method::ratio_area: return "ratio_area";
+        case method::ratio_ltc_denoised: return "ratio_ltc_denoised";
+        case method::mis_denoised: return "mis_denoised";
         default: return "mis";
     }
 }
@@ -50,6 +56,8 @@ inline const char* method_label(method m) {
         case method::ratio_ltc: return "(a)";
         case method::ratio_ltc_adaptive: return "(a+)";
         case method::ratio_area: return "(b)";
+        case method::ratio_ltc_denoised: return "(d)";
+        case method::mis_denoised: return "(e)";
         default: return "(c)";
     }
 }
@@ -94,6 +102,10 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, lobes, rng);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
+    out.specular = dvec3(r.unshadowed.specular);
+    out.diffuse = dvec3(r.unshadowed.diffuse);
+    out.specular_estimates = {r.specular_estimates.shadowed, r.specular_estimates.unshadowed};
+    out.diffuse_estimates = {r.diffuse_estimates.shadowed, r.diffuse_estimates.unshadowed};
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;
@@ -104,11 +116,12 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     return out;
 }
 
-/// One pixel by any method: K = spp samples for (a), (a+) and (b), spp MIS iterations (one BRDF
-/// and one light sample each) for (c).
+/// One pixel by any method, before (d)'s and (e)'s filter: K = spp samples for (a), (a+), (b) and
+/// (d), spp MIS iterations (one BRDF and one light sample each) for (c) and (e).
 inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
                           std::uint64_t seed, ltc::analytic_lobes lobes) {
-    return which == method::mis ? shade_mis(s, tr, h, spp, seed) : shade_ratio(s, tr, h, which, spp, seed, lobes);
+    if (which == method::mis || which == method::mis_denoised) return shade_mis(s, tr, h, spp, seed);
+    return shade_ratio(s, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed, lobes);
 }
 
 }  // namespace shadows
