@@ -1,7 +1,8 @@
 // Shadowed polygonal lights (ltc/shading/shadowed_polygon_light.hpp): the ratio estimator of
 // Heitz, Hill and McGuire 2018 and its unbiased companion, with a visibility callback.
 //   (a) nothing occludes: the ratio is exactly 1, so the result is the analytic shading bit for
-//       bit, for every sample plan and every K (with either analytic part, one or two lobes);
+//       bit, for every sample plan and every K (with each analytic part: one lobe, two lobes, an
+//       LTC and the cosine);
 //       each sample makes one query; each term's two sums are equal;
 //   (b) everything occludes: 0; a light facing away (one-sided) or degenerate input: 0 and no
 //       query;
@@ -14,8 +15,9 @@
 //       - each term's two sums (ratio_estimates) estimate the integrals of f V and f: E(visible)
 //         and E(light), the GGX lobe's integrals over the visible part and the light (ground
 //         truth);
-//       for four sample plans (plan_options: the LTC share by rejection or exactly, the diffuse
-//       share from the area or the exact cosine sampler, area alone). Tolerances: 4 standard errors of the mean over R independent
+//       for five sample plans (plan_options: the LTC share by rejection or exactly, the diffuse
+//       share from the area or the exact cosine sampler, area alone, the LTC of the table of an
+//       LTC and the cosine). Tolerances: 4 standard errors of the mean over R independent
 //       Cranley-Patterson shifts (sigma from the spread of the R results) and of the ground
 //       truth. The ratio estimator's bias is O(1/K) (delta method: about CV^2 / K relative, CV
 //       the coefficient of variation of f / p), against a standard error of CV / sqrt(K R): the
@@ -27,6 +29,7 @@
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <catch2/catch.hpp>
@@ -80,14 +83,16 @@ std::vector<glm::dvec3> clip_half_space(const std::vector<glm::dvec3>& p, const 
 /// The sample plans under test: 0 the default (the LTC share by rejection where I_D >= 1/8, the
 /// diffuse share from the light's area), 1 the LTC share always from the exact restricted sampler,
 /// 2 the diffuse share from the exact cosine sampler (and the LTC share always by rejection),
-/// 3 light-area samples only.
-constexpr int kPlans = 4;
+/// 3 light-area samples only, 4 the default plan with the LTC of the table of an LTC and the cosine
+/// (analytic_lobes::cosine: another density for the specular share).
+constexpr int kPlans = 5;
 
 ltc::shadow_options<float> plan_options(int plan) {
     ltc::shadow_options<float> o;
-    o.sampler = plan < 3 ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
+    o.sampler = plan != 3 ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
     if (plan == 1) o.rejection_from = 2.0f;
     if (plan == 2) o.diffuse = ltc::diffuse_sampler::cosine, o.rejection_from = 0.0f;
+    if (plan == 4) o.lobes = ltc::analytic_lobes::cosine;
     return o;
 }
 
@@ -112,15 +117,17 @@ mean_and_error over_shifts(int R, F&& value) {
 
 TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly", "[shadows]") {
     const auto [view, roughness] = GENERATE(table<float, float>({{0, 0.1f}, {40, 0.3f}, {70, 0.6f}, {85, 1.0f}}));
-    const auto lobes = GENERATE(ltc::analytic_lobes::one, ltc::analytic_lobes::two);
+    const auto lobes = GENERATE(ltc::analytic_lobes::one, ltc::analytic_lobes::two, ltc::analytic_lobes::cosine);
     const scene s = make_scene(view, roughness);
     const auto two = ltc::shade_polygon_light_two_lobe(s.P, s.N, s.V, s.roughness, glm::vec3(0.04f), kAlbedo, kRadiance,
                                                        s.light, 4, ltc::sidedness::one_sided);
+    const auto cosine = ltc::shade_polygon_light_cosine_lobe(s.P, s.N, s.V, s.roughness, glm::vec3(0.04f), kAlbedo,
+                                                             kRadiance, s.light, 4, ltc::sidedness::one_sided);
     std::size_t calls = 0;
     const auto always = [&](const glm::vec3&, const glm::vec3&, float) { return ++calls > 0; };
     for (int plan = 0; plan < kPlans; ++plan)
         for (std::size_t K : {1u, 4u, 16u}) {
-            CAPTURE(view, roughness, lobes == ltc::analytic_lobes::two, plan, K);
+            CAPTURE(view, roughness, static_cast<int>(lobes), plan, K);
             ltc::shadow_options<float> o = plan_options(plan);
             o.samples = K;
             o.rotation = glm::vec2(0.3f, 0.7f);
@@ -131,6 +138,10 @@ TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly
             if (lobes == ltc::analytic_lobes::two) {  // the analytic part: shade_polygon_light_two_lobe's bits
                 CHECK(r.unshadowed.specular == two.specular);
                 CHECK(r.unshadowed.diffuse == two.diffuse);
+            }
+            if (lobes == ltc::analytic_lobes::cosine) {  // shade_polygon_light_cosine_lobe's bits
+                CHECK(r.unshadowed.specular == cosine.specular);
+                CHECK(r.unshadowed.diffuse == cosine.diffuse);
             }
             CHECK(r.ratio.specular == r.unshadowed.specular);
             CHECK(r.ratio.diffuse == r.unshadowed.diffuse);

@@ -3,8 +3,8 @@
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
 //           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST] [--denoise-radius R]
-//           [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E] [--lobes 1|2]
-//           [--help]
+//           [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E]
+//           [--lobes 1|2|cosine] [--help]
 //
 // The scene (z up; scene.hpp), every surface triangles of one Embree scene (tracer.hpp): a floor
 // of unit tiles, GGX dielectrics (F0 = 0.04, Lambertian albedo 0.5) of roughness 0.15, 0.3 and
@@ -43,10 +43,13 @@
 //                    pixels (--denoise-radius R, default 4), on the centre pixel's surface only
 //                    (kind, material, normal, plane), timed with the shading. (d) and (e) draw
 //                    (a)'s and (c)'s random numbers.
-// With --lobes 2, (a), (a+) and (b) take their analytic part from the opt-in two-lobe GGX table
-// (ltc::analytic_lobes::two); their samples, (c) and the reference do not change.
-// "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a) and (b) cast up to K
-// shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) up to K shadow and K BRDF rays
+// With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
+// two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
+// (ltc::analytic_lobes::cosine), and (a)'s and (d)'s samples follow that table's (first) LTC; (c),
+// (e) and the reference do not change.
+// "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
+// (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
+// shadow and K BRDF rays
 // (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
 // direct lighting only, since the light is the only emitter and the floor's inter-reflection is
 // not what the methods compute. It is the direct light of the real BRDF, so (a)'s and (b)'s
@@ -155,7 +158,9 @@ int main(int argc, char** argv) {
                 floor_pixels, floor_pixels - gold_pixels, gold_pixels, occluder_pixels, opt.threads,
                 opt.threads == 1 ? "" : "s");
     if (opt.lobes == ltc::analytic_lobes::two)
-        std::printf("(a), (a+), (b): the analytic part from the two-lobe GGX table (--lobes 2)\n");
+        std::printf("(a), (a+), (b), (d): the analytic part from the two-lobe GGX table (--lobes 2)\n");
+    if (opt.lobes == ltc::analytic_lobes::cosine)
+        std::printf("(a), (a+), (b), (d): the analytic part from the table of an LTC and the cosine (--lobes cosine)\n");
 
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr

@@ -25,7 +25,7 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
     int denoise_radius = default_denoise_radius;  // (d) and (e): the filter's half-width in pixels
     int reference_spp = 4096;  // (c)'s iterations for the reference
-    ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b): the analytic part's table
+    ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b), (d): the analytic part's table
 };
 
 inline void print_help(const char* argv0) {
@@ -33,7 +33,7 @@ inline void print_help(const char* argv0) {
         "usage: %s [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]\n"
         "          [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]\n"
         "          [--denoise-radius R] [--reference-spp N] [--threads K] [--out DIR] [--seed S]\n"
-        "          [--exposure E] [--lobes 1|2] [--help]\n"
+        "          [--exposure E] [--lobes 1|2|cosine] [--help]\n"
         "\n"
         "Renders a tiled GGX floor (dielectric and gold tiles) and two grey occluders lit by one quad\n"
         "light, with shadows traced by Embree, six ways: (a) LTC + ratio-estimator shadows\n"
@@ -64,9 +64,10 @@ inline void print_help(const char* argv0) {
         "                      iterations of (e) (default 1,2,4,...,256)\n"
         "  --denoise-radius R  (d)'s and (e)'s filter: 2 R + 1 taps per pass, 0 none (default 4)\n"
         "  --reference-spp N   iterations of the reference (default 4096)\n"
-        "  --lobes 1|2         the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
-        "                      (default) or the two-lobe table (ltc::analytic_lobes::two); the samples\n"
-        "                      and the reference do not change\n"
+        "  --lobes 1|2|cosine  the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
+        "                      (default), the two-lobe table (ltc::analytic_lobes::two) or the table of\n"
+        "                      an LTC and the cosine (ltc::analytic_lobes::cosine); (a)'s samples follow\n"
+        "                      that table's (first) LTC; (c) and the reference do not change\n"
         "  --threads K         worker threads (default: all hardware threads); the images do not\n"
         "                      depend on it, the times do\n"
         "  --out DIR           output directory, created if needed (default: the current directory)\n"
@@ -109,8 +110,12 @@ inline int parse_args(int argc, char** argv, options& o) {
                                                          : nullptr;
         if (list != nullptr) return parse_list(v.text, 1 << 20, *list) ? option_status::taken : option_status::bad;
         if (a == "--lobes") {
-            if (!v.integer_in(1, 2)) return option_status::bad;
-            o.lobes = v.number == 2 ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+            if (std::string(v.text) == "cosine")
+                o.lobes = ltc::analytic_lobes::cosine;
+            else if (v.integer_in(1, 2))
+                o.lobes = v.number == 2 ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+            else
+                return option_status::bad;
             return option_status::taken;
         }
         if (a == "--denoise-radius") {

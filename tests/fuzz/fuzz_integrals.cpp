@@ -186,7 +186,7 @@ void run(FuzzedDataProvider& in) {
         o.sampler = in.ConsumeBool() ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
         o.diffuse = in.ConsumeBool() ? ltc::diffuse_sampler::cosine : ltc::diffuse_sampler::light_area;
         o.rejection_from = T(2) * in.ConsumeProbability<T>();
-        o.lobes = in.ConsumeBool() ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+        o.lobes = static_cast<ltc::analytic_lobes>(in.ConsumeIntegralInRange<int>(0, 2));
         const auto r = ltc::shade_polygon_light_shadowed(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
                                                          ltc::sidedness::one_sided, alternate, o);
         for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {

@@ -43,15 +43,17 @@
 // (Cranley-Patterson rotation: pass a random shift per pixel to turn the structured error into
 // noise).
 //
-// The analytic part is the one-lobe shading, or with options.lobes = analytic_lobes::two the
-// opt-in two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the ratio then corrects a
-// closer unshadowed result (the shadows example: RMS bias against the path-traced truth 10.4%
-// with one lobe, 4.7% with two, at K = 16), at the cost of its second lobe's integral; the
-// samples then follow its first lobe (sampling the two lobes' mixture measured worse at equal
-// CPU time: README, shadows section).
+// The analytic part is the one-lobe shading, with options.lobes = analytic_lobes::two the opt-in
+// two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the ratio then corrects a closer
+// unshadowed result (the shadows example: RMS bias against the path-traced truth 10.4% with one
+// lobe, 4.7% with two, at K = 16), at the cost of its second lobe's integral; the samples then
+// follow its first lobe (sampling the two lobes' mixture measured worse at equal CPU time:
+// README, shadows section); with analytic_lobes::cosine the opt-in table of an LTC and the
+// clamped cosine (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral), the samples
+// following its LTC.
 //
-// Outputs: `unshadowed` (= shade_polygon_light or shade_polygon_light_two_lobe, horizon clipping
-// ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
+// Outputs: `unshadowed` (= shade_polygon_light, shade_polygon_light_two_lobe or
+// shade_polygon_light_cosine_lobe, horizon clipping ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
 // light), `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
 // same samples and visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's
 // noise instead of the LTC's fitting error), and per term the ratio's two sums
@@ -73,6 +75,7 @@
 #include <ltc/fitting/brdf/ggx.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include <glm/glm.hpp>
@@ -86,10 +89,11 @@ namespace ltc {
 enum class shadow_sampler { ltc_polygon, light_area };
 /// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
 enum class diffuse_sampler { light_area, cosine };
-/// The analytic, unshadowed part: the GGX table's lobe, or the opt-in two-lobe table
+/// The analytic, unshadowed part: the GGX table's lobe, the opt-in two-lobe table
 /// (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe, which the
-/// estimator only needs as a density).
-enum class analytic_lobes { one, two };
+/// estimator only needs as a density) or the opt-in table of an LTC and the cosine
+/// (ltc/shading/cosine_lobe_polygon_light.hpp; the samples follow its LTC).
+enum class analytic_lobes { one, two, cosine };
 
 template <typename T>
 struct shadow_options {
@@ -171,16 +175,19 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     shadowed_polygon_light_result<T> r;
     const shading_frame<T> frame = make_shading_frame(N, V);
     if (!frame.valid || n < 3 || n > max_vertices) return r;
-    // The sampled lobe: the GGX table's, or with two lobes the first (the second adds its term:
-    // shade_polygon_light_two_lobe's bits, without a second form factor).
-    const bool two = options.lobes == analytic_lobes::two;
+    // The sampled lobe: the GGX table's, with two lobes the first (the second adds its term:
+    // shade_polygon_light_two_lobe's bits, without a second form factor), with the cosine the
+    // LTC (the cosine adds its term from the form factor: shade_polygon_light_cosine_lobe's bits).
+    const bool two = options.lobes == analytic_lobes::two, cosine_lobe = options.lobes == analytic_lobes::cosine;
     const std::array<ltc_coefficients<T>, 2> lobes =
-        two ? ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness)
-            : std::array<ltc_coefficients<T>, 2>{ggx::fetch<T>(frame.cos_theta_v, roughness), ltc_coefficients<T>{}};
-    const ltc_coefficients<T>& lobe = lobes[0];
+        two           ? ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness)
+        : cosine_lobe ? ggx_cosine_lobe::fetch<T>(frame.cos_theta_v, roughness)
+                      : std::array<ltc_coefficients<T>, 2>{ggx::fetch<T>(frame.cos_theta_v, roughness), ltc_coefficients<T>{}};
+    const ltc_coefficients<T>& lobe = lobes[cosine_lobe ? 1 : 0];
     const polygon_light_integrals<T> I = integrate_polygon_light<edge_policy::automatic>(frame, lobe.m_inv, P, vertices, n);
     r.unshadowed = polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
     if (two) r.unshadowed.specular += second_lobe_specular(frame, lobes[1], P, F0, radiance, vertices, n, side);
+    if (cosine_lobe) r.unshadowed.specular += radiance * brdf_scale(F0, lobes[0]) * apply_sidedness(I.form_factor, side);
     r.ratio = r.unshadowed;
     const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
     const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;
