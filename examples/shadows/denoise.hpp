@@ -10,8 +10,9 @@
 // The filter: separable (rows, then columns: (2R + 1) taps each instead of (2R + 1)^2), Gaussian
 // in pixels (sigma = R / 2), each tap kept only on the same surface as the centre pixel: the same
 // kind (floor or occluder) and material, normals within 18 degrees, and the tap's point within
-// 1% of the centre's distance from its tangent plane. Neither pass crosses a tile edge, the
-// box's edges or the silhouettes. Cost: about 2 (2R + 1) taps of 4 (d) or 3 (e) values per
+// 1% of the centre's distance from its tangent plane. Neither pass crosses an edge between tiles
+// of different materials (tiles of one material meet at corners only), the box's edges or the
+// silhouettes. Cost: about 2 (2R + 1) taps of 4 (d) or 3 (e) values per
 // shaded pixel, timed with the shading (measure.hpp).
 #pragma once
 
@@ -30,8 +31,6 @@
 #include <vector>
 
 namespace shadows {
-
-constexpr int default_denoise_radius = 4;
 
 /// What the filter compares of two pixels: the hit, and the distance from the centre's tangent
 /// plane that a tap may have (1% of the centre's distance from the eye).
@@ -101,8 +100,8 @@ inline void denoise_ratio(const std::vector<pixel_hit>& hits, const vec3& eye, i
                           unsigned threads, std::vector<shaded_pixel>& px) {
     std::vector<std::array<double, 4>> v(px.size());
     for (std::size_t i = 0; i < px.size(); ++i)
-        v[i] = {px[i].specular_estimates.shadowed, px[i].specular_estimates.unshadowed,
-                px[i].diffuse_estimates.shadowed, px[i].diffuse_estimates.unshadowed};
+        v[i] = {px[i].specular_estimates.visible, px[i].specular_estimates.total,
+                px[i].diffuse_estimates.visible, px[i].diffuse_estimates.total};
     v = cross_bilateral(hits, eye, W, H, radius, threads, std::move(v));
     for (std::size_t i = 0; i < px.size(); ++i) {
         if (!hits[i].shaded()) continue;

@@ -45,15 +45,15 @@
 //                    (a)'s and (c)'s random numbers.
 // With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
 // two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
-// (ltc::analytic_lobes::cosine), and (a)'s and (d)'s samples follow that table's (first) LTC; (c),
-// (e) and the reference do not change.
+// (ltc::analytic_lobes::cosine_lobe), and the samples of (a), (a+) and (d) follow that table's
+// first, or only, LTC; (c), (e) and the reference do not change.
 // "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
 // (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
 // shadow and K BRDF rays
 // (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
 // direct lighting only, since the light is the only emitter and the floor's inter-reflection is
-// not what the methods compute. It is the direct light of the real BRDF, so (a)'s and (b)'s
-// errors include the LTC fit's as well as their shadows'.
+// not what the methods compute. It is the direct light of the real BRDF, so the errors of (a),
+// (a+), (b) and (d) include the LTC fit's as well as their shadows'.
 // (a+)'s average rather than the K-sample result alone: it uses all K0 + K rays paid for, and it
 // scales the early stop's bias by K / (K0 + K). Measured in the default run (the K-sample result
 // alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4, 8.7% (8.8%) at K = 16;
@@ -97,9 +97,10 @@
 //
 // Source files (examples/shadows/): options.hpp (the command line), scene.hpp (geometry,
 // materials, camera), tracer.hpp (Embree: closest hits and shadow rays, their offsets),
-// camera.hpp (what each pixel sees), shade_ratio.hpp ((a), (a+), (b)), shade_mis.hpp ((c) and the
-// reference), measure.hpp (timed renders, errors by region, noise), report.hpp (CSV and tables),
-// this file (the flow), plot_error_vs_time.py (the figure).
+// camera.hpp (what each pixel sees), shade_ratio.hpp ((a), (a+), (b), and the pixels of (d)),
+// shade_mis.hpp ((c), the pixels of (e), and the reference), denoise.hpp ((d)'s and (e)'s filter),
+// measure.hpp (timed renders, errors by region, noise), report.hpp (CSV and tables), this file
+// (the flow), plot_error_vs_time.py (the figure).
 #include "camera.hpp"
 #include "common/cli.hpp"
 #include "common/colour.hpp"
@@ -159,7 +160,7 @@ int main(int argc, char** argv) {
                 opt.threads == 1 ? "" : "s");
     if (opt.lobes == ltc::analytic_lobes::two)
         std::printf("(a), (a+), (b), (d): the analytic part from the two-lobe GGX table (--lobes 2)\n");
-    if (opt.lobes == ltc::analytic_lobes::cosine)
+    if (opt.lobes == ltc::analytic_lobes::cosine_lobe)
         std::printf("(a), (a+), (b), (d): the analytic part from the table of an LTC and the cosine (--lobes cosine)\n");
 
     // The reference: (c) with its own seeds.

@@ -1,7 +1,7 @@
 // shadows/measure.hpp -- a method's image, timed, and its error against the reference.
 //
 // Time: wall clock of shading the whole image (every pixel, the given worker threads; the camera
-// rays, traced once before, excluded). Each render runs twice, and again until 0.5 s have passed
+// rays, traced once before, excluded), and for (d) and (e) of their filter (denoise.hpp). Each render runs twice, and again until 0.5 s have passed
 // (at most 5 times), with the same seeds (the same image), and the best time is kept: so that
 // milliseconds are not swamped by thread start-up, and other processes' brief use of the cores
 // is filtered out. Next to it, the process's CPU time (std::clock, all threads; best of the same

@@ -3,7 +3,6 @@
 #pragma once
 
 #include "common/cli.hpp"
-#include "denoise.hpp"
 
 #include <ltc/shading/shadowed_polygon_light.hpp>
 
@@ -23,7 +22,7 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};   // (c): iterations
     std::vector<int> denoised_spp{1, 2, 4, 8, 16, 32, 64};        // (d): K
     std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
-    int denoise_radius = default_denoise_radius;  // (d) and (e): the filter's half-width in pixels
+    int denoise_radius = 4;  // (d) and (e): the filter's half-width in pixels (denoise.hpp)
     int reference_spp = 4096;  // (c)'s iterations for the reference
     ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b), (d): the analytic part's table
 };
@@ -66,8 +65,9 @@ inline void print_help(const char* argv0) {
         "  --reference-spp N   iterations of the reference (default 4096)\n"
         "  --lobes 1|2|cosine  the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
         "                      (default), the two-lobe table (ltc::analytic_lobes::two) or the table of\n"
-        "                      an LTC and the cosine (ltc::analytic_lobes::cosine); (a)'s samples follow\n"
-        "                      that table's (first) LTC; (c) and the reference do not change\n"
+        "                      an LTC and the cosine (ltc::analytic_lobes::cosine_lobe); the samples of\n"
+        "                      (a), (a+) and (d) follow that table's first, or only, LTC; (c), (e) and\n"
+        "                      the reference do not change\n"
         "  --threads K         worker threads (default: all hardware threads); the images do not\n"
         "                      depend on it, the times do\n"
         "  --out DIR           output directory, created if needed (default: the current directory)\n"
@@ -111,7 +111,7 @@ inline int parse_args(int argc, char** argv, options& o) {
         if (list != nullptr) return parse_list(v.text, 1 << 20, *list) ? option_status::taken : option_status::bad;
         if (a == "--lobes") {
             if (std::string(v.text) == "cosine")
-                o.lobes = ltc::analytic_lobes::cosine;
+                o.lobes = ltc::analytic_lobes::cosine_lobe;
             else if (v.integer_in(1, 2))
                 o.lobes = v.number == 2 ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
             else

@@ -41,7 +41,8 @@ struct shaded_pixel {
     dvec3 radiance{0.0};
     double luminance_variance = 0;  // of the estimate (the mean over the iterations)
     std::size_t rays = 0;           // visibility queries made
-    // The ratio methods' analytic terms and their two sums (for (d)'s filter: denoise.hpp).
+    // The ratio methods' analytic terms and their two sums, of the first call for (a+) (read by
+    // (d)'s filter only: denoise.hpp).
     dvec3 specular{0.0}, diffuse{0.0};
     ltc::ratio_estimates<double> specular_estimates, diffuse_estimates;
 };

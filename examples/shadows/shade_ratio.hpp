@@ -1,7 +1,9 @@
-// shadows/shade_ratio.hpp -- methods (a), (a+) and (b): ltc::shade_polygon_light_shadowed
-// (ltc/shading/shadowed_polygon_light.hpp), the ratio estimator of Heitz, Hill and McGuire 2018:
-// the analytic, unshadowed LTC shading times the ratio of two Monte Carlo estimates over the same
-// K samples, of the shadowed and of the unshadowed integrand, per term (specular, diffuse).
+// shadows/shade_ratio.hpp -- the methods' names, and the pixels of every method: (a), (a+), (b)
+// and (d) (before its filter: denoise.hpp) here, (c) and (e) in shade_mis.hpp. (a), (a+) and (b):
+// ltc::shade_polygon_light_shadowed (ltc/shading/shadowed_polygon_light.hpp), the ratio estimator
+// of Heitz, Hill and McGuire 2018: the analytic, unshadowed LTC shading times the ratio of two
+// Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
+// per term (specular, diffuse); (d) keeps (a)'s two estimates per term for its filter.
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
 //        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~15x more per sample) in
@@ -104,8 +106,8 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     out.rays = r.rays;
     out.specular = dvec3(r.unshadowed.specular);
     out.diffuse = dvec3(r.unshadowed.diffuse);
-    out.specular_estimates = {r.specular_estimates.shadowed, r.specular_estimates.unshadowed};
-    out.diffuse_estimates = {r.diffuse_estimates.shadowed, r.diffuse_estimates.unshadowed};
+    out.specular_estimates = {r.specular_estimates.visible, r.specular_estimates.total};
+    out.diffuse_estimates = {r.diffuse_estimates.visible, r.diffuse_estimates.total};
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;

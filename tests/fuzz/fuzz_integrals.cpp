@@ -1,16 +1,16 @@
 // libFuzzer harness: for any finite polygon (0..15 vertices, any magnitudes, degenerate or not)
 // and any matrix accepted by the checked factory, every integral, density and sample of the
 // library is finite; so is GGX polygon-light shading for any finite P, N, V and roughness, with one
-// or two lobes, point by point and in batches (every instruction set this CPU runs), and with
-// shadows (the ratio estimator and its two sums per term, any sample plan); the
-// batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons with every instruction set this
-// CPU runs) agrees with the scalar path; and the textured lights (fuzz_textured.hpp: tiny
-// textures, the exact cell integrals with fuzzed budgets and tolerances, textured shading with
-// every method) give finite results, non-negative for non-negative textures, with finite,
-// non-negative error bounds; and the polygon samplers (fuzz_sampling.hpp: projected solid angle,
-// restricted LTC, light area) give finite directions, densities and inverses. Build: clang++
-// -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -I include tests/fuzz/fuzz_integrals.cpp;
-// run on tests/fuzz/corpus (see .ci/run).
+// or two lobes or an LTC and the cosine, point by point and in batches (every instruction set
+// this CPU runs), and with shadows (the ratio estimator and its two sums per term, any sample
+// plan, any analytic part); the batch API (fuzz_batch.hpp: batches of 1..19 quads or n-gons
+// with every instruction set this CPU runs) agrees with the scalar path; and the textured lights
+// (fuzz_textured.hpp: tiny textures, the exact cell integrals with fuzzed budgets and
+// tolerances, textured shading with every method) give finite results, non-negative for
+// non-negative textures, with finite, non-negative error bounds; and the polygon samplers
+// (fuzz_sampling.hpp: projected solid angle, restricted LTC, light area) give finite directions,
+// densities and inverses. Build: clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined
+// -I include tests/fuzz/fuzz_integrals.cpp; run on tests/fuzz/corpus (see .ci/run).
 #include "fuzz_batch.hpp"
 #include "fuzz_common.hpp"
 #include "fuzz_sampling.hpp"
@@ -186,7 +186,8 @@ void run(FuzzedDataProvider& in) {
         o.sampler = in.ConsumeBool() ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
         o.diffuse = in.ConsumeBool() ? ltc::diffuse_sampler::cosine : ltc::diffuse_sampler::light_area;
         o.rejection_from = T(2) * in.ConsumeProbability<T>();
-        o.lobes = static_cast<ltc::analytic_lobes>(in.ConsumeIntegralInRange<int>(0, 2));
+        o.lobes = static_cast<ltc::analytic_lobes>(
+            in.ConsumeIntegralInRange<int>(0, static_cast<int>(ltc::analytic_lobes::cosine_lobe)));
         const auto r = ltc::shade_polygon_light_shadowed(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
                                                          ltc::sidedness::one_sided, alternate, o);
         for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {
@@ -194,8 +195,8 @@ void run(FuzzedDataProvider& in) {
             require_finite(t->diffuse, "shadowed diffuse");
         }
         for (const auto* e : {&r.specular_estimates, &r.diffuse_estimates}) {
-            require_finite(e->shadowed, "shadowed estimate");
-            require_finite(e->unshadowed, "unshadowed estimate");
+            require_finite(e->visible, "shadowed estimate");
+            require_finite(e->total, "unshadowed estimate");
         }
     }
 

@@ -26,10 +26,11 @@
 //                cos / E: ltc/core/projected_solid_angle_sampling.hpp; ~8x the cost of an area
 //                sample in bench_sampling, for constant diffuse weights where area samples' vary
 //                most: lights close to or grazing the surface). K_s and K_d are in proportion to
-//                the specular and diffuse shares of the analytic result, and every sample is
-//                weighted by the balance heuristic over the whole plan (multi-sample MIS, Veach
-//                1997 eq. 9.13: f / (K_s D / I_D + K_d p_d), or f / (N D + K_d p_d) with
-//                rejection; the normalizers in closed form). Where the light is unoccluded the
+//                the specular and diffuse shares of the analytic result (with the cosine lobe,
+//                below, its LTC's part and the rest), and every sample is weighted by the balance
+//                heuristic over the whole plan (multi-sample MIS, Veach 1997 eq. 9.13:
+//                f / (K_s D / I_D + K_d p_d), or f / (N D + K_d p_d) with rejection; the
+//                normalizers in closed form). Where the light is unoccluded the
 //                ratio is exactly 1 (the analytic result, without noise); where the LTC takes
 //                all the samples, f / p varies only by the GGX/LTC mismatch, so the ratio is
 //                close to the visible fraction of the samples.
@@ -48,13 +49,15 @@
 // unshadowed result (the shadows example: RMS bias against the path-traced truth 10.4% with one
 // lobe, 4.7% with two, at K = 16), at the cost of its second lobe's integral; the samples then
 // follow its first lobe (sampling the two lobes' mixture measured worse at equal CPU time:
-// README, shadows section); with analytic_lobes::cosine the opt-in table of an LTC and the
-// clamped cosine (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral), the samples
-// following its LTC.
+// README, shadows section). With analytic_lobes::cosine_lobe, the opt-in table of an LTC and the
+// clamped cosine (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral; RMS bias 6.3%
+// there): K_s follows its LTC's part of the specular term only, and the cosine's part joins the
+// diffuse share (K_d), whose technique covers the broad part that the LTC, fitted next to the
+// cosine, leaves out.
 //
 // Outputs: `unshadowed` (= shade_polygon_light, shade_polygon_light_two_lobe or
-// shade_polygon_light_cosine_lobe, horizon clipping ltc_space), `ratio` (the estimator above: biased, consistent, exact when nothing occludes the
-// light), `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
+// shade_polygon_light_cosine_lobe, horizon clipping ltc_space), `ratio` (the estimator above:
+// biased, consistent, exact when nothing occludes the light), `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
 // same samples and visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's
 // noise instead of the LTC's fitting error), and per term the ratio's two sums
 // (`specular_estimates`, `diffuse_estimates`), for renderers that denoise the shadows as Heitz et
@@ -93,7 +96,7 @@ enum class diffuse_sampler { light_area, cosine };
 /// (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe, which the
 /// estimator only needs as a density) or the opt-in table of an LTC and the cosine
 /// (ltc/shading/cosine_lobe_polygon_light.hpp; the samples follow its LTC).
-enum class analytic_lobes { one, two, cosine };
+enum class analytic_lobes { one, two, cosine_lobe };
 
 template <typename T>
 struct shadow_options {
@@ -106,16 +109,19 @@ struct shadow_options {
 };
 
 /// One term's two Monte Carlo estimates over the same samples (the balance heuristic's sums,
-/// sum_k f(w_k) [V(w_k)] / sum_j n_j p_j(w_k)): unbiased estimates of the integrals over the light
-/// of f V (`shadowed`) and of f (`unshadowed`), f the term's BRDF without Fresnel and radiance.
-/// Their ratio is the result's visibility ratio (1 where both are 0). A renderer that denoises
-/// shadows filters the two over neighbouring pixels separately and takes the ratio of the filtered
+/// sum_k f(w_k) [V(w_k)] / sum_j n_j p_j(w_k)): of the integrals over the light of f V (`visible`)
+/// and of f (`total`), f the term's BRDF without Fresnel and radiance; unbiased where the sample
+/// plan's density covers the part of the light where f > 0 (the light-area share covers all of it;
+/// an LTC share alone only its lobe's support), {0, 0} where no sample is drawn. Their ratio is
+/// the term's visibility ratio (ratio_shading). Since the plan's counts n_j are in the
+/// denominator, their expectations do not depend on K: a renderer that denoises shadows filters
+/// each of the two over neighbouring pixels, whatever their K, and takes the ratio of the filtered
 /// values (Heitz et al. 2018: the noise is then blurred in the shadows only, never in the
-/// analytic shading): ltc::ratio_shading.
+/// analytic shading).
 template <typename T>
 struct ratio_estimates {
-    T shadowed{0};
-    T unshadowed{0};
+    T visible{0};  ///< estimate of the integral of f V over the light
+    T total{0};    ///< estimate of the integral of f over the light
 };
 
 template <typename T>
@@ -123,17 +129,30 @@ struct shadowed_polygon_light_result {
     polygon_light_result<T> unshadowed;  ///< analytic LTC, no visibility
     polygon_light_result<T> ratio;       ///< Heitz et al. 2018's ratio estimator
     polygon_light_result<T> unbiased;    ///< Monte Carlo of the true BRDF with the same samples
-    ratio_estimates<T> specular_estimates, diffuse_estimates;  ///< the ratio's two sums per term
     std::size_t rays = 0;                ///< visibility queries made
+    ratio_estimates<T> specular_estimates;  ///< the specular ratio's two sums (for denoising)
+    ratio_estimates<T> diffuse_estimates;   ///< the diffuse ratio's two sums (for denoising)
 };
 
-/// The ratio estimator's result from an analytic term and the two estimates of its visibility
-/// ratio (Heitz et al. 2018, eq. 4): unshadowed * shadowed / unshadowed_estimate, the analytic
-/// term itself where the estimate of the unshadowed integral is not positive (no sample carried
-/// weight). Takes filtered (denoised) estimates as well as one pixel's.
+/// The ratio estimator's term from its analytic value and the two estimates of its visibility
+/// ratio (Heitz et al. 2018, eq. 4): analytic * visible / total, the analytic term itself where
+/// the total is not positive (no sample carried weight). Takes filtered (denoised) estimates as
+/// well as one pixel's.
 template <typename T>
-LTC_HOST_DEVICE inline glm::vec<3, T> ratio_shading(const glm::vec<3, T>& unshadowed, const ratio_estimates<T>& e) {
-    return e.unshadowed > T(0) ? unshadowed * (e.shadowed / e.unshadowed) : unshadowed;
+LTC_HOST_DEVICE inline glm::vec<3, T> ratio_shading(const glm::vec<3, T>& analytic, const ratio_estimates<T>& e) {
+    return e.total > T(0) ? analytic * (e.visible / e.total) : analytic;
+}
+
+/// Both terms: the analytic, unshadowed result (shadowed_polygon_light_result::unshadowed) and
+/// each term's two estimates, filtered or not.
+template <typename T>
+LTC_HOST_DEVICE inline polygon_light_result<T> ratio_shading(const polygon_light_result<T>& analytic,
+                                                             const ratio_estimates<T>& specular,
+                                                             const ratio_estimates<T>& diffuse) {
+    polygon_light_result<T> r;
+    r.specular = ratio_shading(analytic.specular, specular);
+    r.diffuse = ratio_shading(analytic.diffuse, diffuse);
+    return r;
 }
 
 namespace detail {
@@ -178,7 +197,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     // The sampled lobe: the GGX table's, with two lobes the first (the second adds its term:
     // shade_polygon_light_two_lobe's bits, without a second form factor), with the cosine the
     // LTC (the cosine adds its term from the form factor: shade_polygon_light_cosine_lobe's bits).
-    const bool two = options.lobes == analytic_lobes::two, cosine_lobe = options.lobes == analytic_lobes::cosine;
+    const bool two = options.lobes == analytic_lobes::two, cosine_lobe = options.lobes == analytic_lobes::cosine_lobe;
     const std::array<ltc_coefficients<T>, 2> lobes =
         two           ? ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness)
         : cosine_lobe ? ggx_cosine_lobe::fetch<T>(frame.cos_theta_v, roughness)
@@ -186,11 +205,16 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const ltc_coefficients<T>& lobe = lobes[cosine_lobe ? 1 : 0];
     const polygon_light_integrals<T> I = integrate_polygon_light<edge_policy::automatic>(frame, lobe.m_inv, P, vertices, n);
     r.unshadowed = polygon_light_radiance(I, lobe, F0, albedo, radiance, side);
+    const vec3 sampled_lobe = r.unshadowed.specular;
     if (two) r.unshadowed.specular += second_lobe_specular(frame, lobes[1], P, F0, radiance, vertices, n, side);
     if (cosine_lobe) r.unshadowed.specular += radiance * brdf_scale(F0, lobes[0]) * apply_sidedness(I.form_factor, side);
     r.ratio = r.unshadowed;
     const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
     const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;
+    // The LTC technique's share: the specular term, or with the cosine lobe its LTC's part only
+    // (the cosine's part goes with the diffuse term to the diffuse technique, the light's area or
+    // the cosine itself: the LTC, fitted next to the cosine, is narrower than GGX).
+    const T weight_ltc = cosine_lobe ? sampled_lobe.x + sampled_lobe.y + sampled_lobe.z : weight_s;
     const std::size_t K = options.samples;
     if (!(weight_s + weight_d > T(0)) || K == 0) return r;
 
@@ -224,7 +248,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
 
     if (options.sampler == shadow_sampler::ltc_polygon) {
         // Samples split between the two exact samplers in proportion to the terms' shares.
-        std::size_t ks = static_cast<std::size_t>(std::lround(T(K) * weight_s / (weight_s + weight_d)));
+        std::size_t ks = static_cast<std::size_t>(std::lround(T(K) * weight_ltc / (weight_s + weight_d)));
         if (!(i_d > T(0))) ks = 0;
         if (!(e > T(0))) ks = K;
         const std::size_t kd = K - ks;
@@ -293,8 +317,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
 
     r.specular_estimates = spec.estimates();
     r.diffuse_estimates = diff.estimates();
-    r.ratio.specular = ratio_shading(r.unshadowed.specular, r.specular_estimates);
-    r.ratio.diffuse = ratio_shading(r.unshadowed.diffuse, r.diffuse_estimates);
+    r.ratio = ratio_shading(r.unshadowed, r.specular_estimates, r.diffuse_estimates);
     r.unbiased.specular = radiance * spec.unbiased;
     r.unbiased.diffuse = albedo * radiance * diff.visible;
     return r;
