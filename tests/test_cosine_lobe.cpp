@@ -12,6 +12,7 @@
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
+#include "support/bad_input.hpp"
 #include "support/shading_scenes.hpp"
 
 #include <glm/glm.hpp>
@@ -24,6 +25,34 @@
 #include <vector>
 
 using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle, node_m_inv
+
+namespace {
+
+/// |shading - truth| / truth of the one-lobe and of the LTC-and-cosine specular term for the light
+/// L seen at theta_v degrees, roughness r (F0 = 1, no diffuse), against the Monte Carlo GGX
+/// ground truth of 2^16 MIS iterations with `seed`, whose relative standard error is checked
+/// below 0.5%.
+struct light_errors {
+    double one, cosine;
+};
+
+light_errors errors_against_ground_truth(double theta_v, double r, const std::vector<dvec3>& L, std::uint64_t seed) {
+    const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta_v * pi / 180));
+    ltc::ground_truth::options opt;
+    opt.samples = 1u << 16;
+    opt.seed = seed;
+    const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
+    const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(),
+                                              L.size(), ltc::sidedness::one_sided);
+    const auto cos = ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
+                                                          L.data(), L.size(), ltc::sidedness::one_sided);
+    const light_errors e{std::abs(one.specular.x - gt.mean) / gt.mean, std::abs(cos.specular.x - gt.mean) / gt.mean};
+    CAPTURE(theta_v, r, seed, gt.mean, gt.standard_error, one.specular.x, cos.specular.x, e.one, e.cosine);
+    CHECK(gt.standard_error <= 0.005 * gt.mean);
+    return e;
+}
+
+}  // namespace
 
 TEST_CASE("cosine-lobe table: the cosine's identity matrix, finite entries, invertible LTCs", "[cosine_lobe]") {
     const int n = ltc::ggx_cosine_lobe::size;
@@ -107,16 +136,10 @@ TEST_CASE("cosine-lobe shading: bad input gives finite results", "[cosine_lobe][
         CAPTURE(r);
         for (int c = 0; c < 3; ++c) CHECK((std::isfinite(s.specular[c]) && std::isfinite(s.diffuse[c])));
     }
-    const dvec3 at_p[4] = {dvec3(0), quad[1], quad[2], quad[3]};
-    for (const auto& s : {ltc::shade_polygon_light_cosine_lobe(dvec3(0), N, V, 0.5, dvec3(1), dvec3(1), dvec3(1), quad.data(),
-                                                               2, ltc::sidedness::one_sided),
-                          ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0), V, 0.5, dvec3(1), dvec3(1), dvec3(1),
-                                                               quad.data(), 4, ltc::sidedness::one_sided),
-                          ltc::shade_polygon_light_cosine_lobe(dvec3(0), N, V, 0.5, dvec3(1), dvec3(1), dvec3(1), at_p, 4,
-                                                               ltc::sidedness::one_sided)}) {
-        CHECK(s.specular == dvec3(0));
-        CHECK(s.diffuse == dvec3(0));
-    }
+    ltc_test::check_degenerate_lights_give_zero(quad.data(), N, [&](const dvec3& n, const dvec3* v, std::size_t count) {
+        return ltc::shade_polygon_light_cosine_lobe(dvec3(0), n, V, 0.5, dvec3(1), dvec3(1), dvec3(1), v, count,
+                                                    ltc::sidedness::one_sided);
+    });
 }
 
 TEST_CASE("cosine-lobe table against the Monte Carlo GGX ground truth at grazing views", "[cosine_lobe][ground_truth]") {
@@ -140,20 +163,9 @@ TEST_CASE("cosine-lobe table against the Monte Carlo GGX ground truth at grazing
             const std::vector<dvec3> lights[] = {facing_rectangle(180, 90 - theta, 0.5, 0.25), facing_rectangle(0, 80, 0.5, 0.25),
                                                  facing_rectangle(90, 30, 0.5, 0.25)};
             for (const auto& L : lights) {
-                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
-                ltc::ground_truth::options opt;
-                opt.samples = 1u << 16;
-                opt.seed = 7000 + std::uint64_t(count);
-                const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
-                const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(),
-                                                          L.size(), ltc::sidedness::one_sided);
-                const auto cos = ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
-                                                                      L.data(), L.size(), ltc::sidedness::one_sided);
-                const double e1 = std::abs(one.specular.x - gt.mean) / gt.mean, ec = std::abs(cos.specular.x - gt.mean) / gt.mean;
-                CAPTURE(theta, r, count, gt.mean, gt.standard_error, one.specular.x, cos.specular.x, e1, ec);
-                CHECK(gt.standard_error <= 0.005 * gt.mean);
-                sum1 += e1, sumc += ec;
-                worstc = std::max(worstc, ec);
+                const light_errors e = errors_against_ground_truth(theta, r, L, 7000 + std::uint64_t(count));
+                sum1 += e.one, sumc += e.cosine;
+                worstc = std::max(worstc, e.cosine);
                 ++count;
             }
         }
@@ -179,20 +191,8 @@ TEST_CASE("cosine-lobe table between nodes where the split between the lobes jum
     for (const double r : {0.8, 0.84, 0.86})
         for (const double theta : {1.3, 8.0})
             for (const double elevation : {90.0, 60.0, 30.0}) {
-                const std::vector<dvec3> L = facing_rectangle(180, elevation, 0.3, 0.3);
-                const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
-                ltc::ground_truth::options opt;
-                opt.samples = 1u << 16;
-                opt.seed = seed++;
-                const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
-                const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(),
-                                                          L.size(), ltc::sidedness::one_sided);
-                const auto cos = ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
-                                                                      L.data(), L.size(), ltc::sidedness::one_sided);
-                const double e1 = std::abs(one.specular.x - gt.mean) / gt.mean, ec = std::abs(cos.specular.x - gt.mean) / gt.mean;
-                CAPTURE(r, theta, elevation, gt.mean, gt.standard_error, one.specular.x, cos.specular.x, e1, ec);
-                CHECK(gt.standard_error <= 0.005 * gt.mean);
-                worst = std::max(worst, ec), worst1 = std::max(worst1, e1);
+                const light_errors e = errors_against_ground_truth(theta, r, facing_rectangle(180, elevation, 0.3, 0.3), seed++);
+                worst = std::max(worst, e.cosine), worst1 = std::max(worst1, e.one);
             }
     WARN("one lobe: worst " << 100 * worst1 << "%; LTC and cosine: worst " << 100 * worst << "%");
     CHECK(worst <= 0.06);

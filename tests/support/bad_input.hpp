@@ -1,7 +1,9 @@
-// Helpers of the bad-input tests (test_bad_input.cpp, test_checked_factories.cpp): the
-// supplement's matrix and a rounding bound for results assembled from edge terms.
+// Helpers of the bad-input tests (test_bad_input.cpp, test_checked_factories.cpp, and the
+// opt-in tables' tests): the supplement's matrix, a rounding bound for results assembled from
+// edge terms, and the degenerate lights every polygon-light shading gives 0 for.
 #pragma once
 
+#include <catch2/catch.hpp>
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -21,6 +23,18 @@ glm::mat<3, 3, T> supplement_m() {
 template <typename T>
 T edge_sum_bound(std::size_t n) {
     return std::numeric_limits<T>::epsilon() / 2 * T(20 + n) * T(n) / 2;
+}
+
+/// A polygon-light shading gives exactly 0 for n < 3, for N = 0 and for a vertex at the shading
+/// point: `shade(N, vertices, n)` shades at the origin (its other arguments fixed by the caller),
+/// `quad` a light of 4 vertices, `N` a valid normal.
+template <typename Shade>
+void check_degenerate_lights_give_zero(const glm::dvec3* quad, const glm::dvec3& N, Shade&& shade) {
+    const glm::dvec3 at_p[4] = {glm::dvec3(0), quad[1], quad[2], quad[3]};
+    for (const auto& r : {shade(N, quad, 2), shade(glm::dvec3(0), quad, 4), shade(N, at_p, 4)}) {
+        CHECK(r.specular == glm::dvec3(0));
+        CHECK(r.diffuse == glm::dvec3(0));
+    }
 }
 
 }  // namespace ltc_test
