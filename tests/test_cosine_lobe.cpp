@@ -13,6 +13,7 @@
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
 #include "support/bad_input.hpp"
+#include "support/lobe_errors.hpp"
 #include "support/shading_scenes.hpp"
 
 #include <glm/glm.hpp>
@@ -28,28 +29,12 @@ using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle, node_
 
 namespace {
 
-/// |shading - truth| / truth of the one-lobe and of the LTC-and-cosine specular term for the light
-/// L seen at theta_v degrees, roughness r (F0 = 1, no diffuse), against the Monte Carlo GGX
-/// ground truth of 2^16 MIS iterations with `seed`, whose relative standard error is checked
-/// below 0.5%.
-struct light_errors {
-    double one, cosine;
-};
-
-light_errors errors_against_ground_truth(double theta_v, double r, const std::vector<dvec3>& L, std::uint64_t seed) {
-    const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta_v * pi / 180));
-    ltc::ground_truth::options opt;
-    opt.samples = 1u << 16;
-    opt.seed = seed;
-    const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
-    const auto one = ltc::shade_polygon_light(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(),
-                                              L.size(), ltc::sidedness::one_sided);
-    const auto cos = ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1),
-                                                          L.data(), L.size(), ltc::sidedness::one_sided);
-    const light_errors e{std::abs(one.specular.x - gt.mean) / gt.mean, std::abs(cos.specular.x - gt.mean) / gt.mean};
-    CAPTURE(theta_v, r, seed, gt.mean, gt.standard_error, one.specular.x, cos.specular.x, e.one, e.cosine);
-    CHECK(gt.standard_error <= 0.005 * gt.mean);
-    return e;
+/// The errors of the one-lobe and of the LTC-and-cosine shading (support/lobe_errors.hpp).
+lobe_errors errors_against_ground_truth(double theta_v, double r, const std::vector<dvec3>& L, std::uint64_t seed) {
+    return errors_against_truth(theta_v, r, L, seed, [](const dvec3& V, double roughness, const std::vector<dvec3>& light) {
+        return ltc::shade_polygon_light_cosine_lobe(dvec3(0), dvec3(0, 0, 1), V, roughness, dvec3(1), dvec3(0), dvec3(1),
+                                                    light.data(), light.size(), ltc::sidedness::one_sided);
+    });
 }
 
 }  // namespace
@@ -163,9 +148,9 @@ TEST_CASE("cosine-lobe table against the Monte Carlo GGX ground truth at grazing
             const std::vector<dvec3> lights[] = {facing_rectangle(180, 90 - theta, 0.5, 0.25), facing_rectangle(0, 80, 0.5, 0.25),
                                                  facing_rectangle(90, 30, 0.5, 0.25)};
             for (const auto& L : lights) {
-                const light_errors e = errors_against_ground_truth(theta, r, L, 7000 + std::uint64_t(count));
-                sum1 += e.one, sumc += e.cosine;
-                worstc = std::max(worstc, e.cosine);
+                const lobe_errors e = errors_against_ground_truth(theta, r, L, 7000 + std::uint64_t(count));
+                sum1 += e.one, sumc += e.other;
+                worstc = std::max(worstc, e.other);
                 ++count;
             }
         }
@@ -191,8 +176,8 @@ TEST_CASE("cosine-lobe table between nodes where the split between the lobes jum
     for (const double r : {0.8, 0.84, 0.86})
         for (const double theta : {1.3, 8.0})
             for (const double elevation : {90.0, 60.0, 30.0}) {
-                const light_errors e = errors_against_ground_truth(theta, r, facing_rectangle(180, elevation, 0.3, 0.3), seed++);
-                worst = std::max(worst, e.cosine), worst1 = std::max(worst1, e.one);
+                const lobe_errors e = errors_against_ground_truth(theta, r, facing_rectangle(180, elevation, 0.3, 0.3), seed++);
+                worst = std::max(worst, e.other), worst1 = std::max(worst1, e.one);
             }
     WARN("one lobe: worst " << 100 * worst1 << "%; LTC and cosine: worst " << 100 * worst << "%");
     CHECK(worst <= 0.06);
