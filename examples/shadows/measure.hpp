@@ -1,12 +1,13 @@
 // shadows/measure.hpp -- a method's image, timed, and its error against the reference.
 //
 // Time: wall clock of shading the whole image (every pixel, the given worker threads; the camera
-// rays, traced once before, excluded), and for (d) and (e) of their filter (denoise.hpp). Each render runs twice, and again until 0.5 s have passed
-// (at most 5 times), with the same seeds (the same image), and the best time is kept: so that
-// milliseconds are not swamped by thread start-up, and other processes' brief use of the cores
-// is filtered out. Next to it, the process's CPU time (std::clock, all threads; best of the same
-// runs): on a machine shared with other work, where the wall clock of a 2-thread render depends
-// on who else runs, the CPU time of the same work barely does.
+// rays, traced once before, excluded), and for (d) and (e) of their filter (denoise.hpp). Each
+// render runs twice, and again until 0.5 s have passed (at most 5 times), with the same seeds
+// (the same image), and the best time is kept: so that milliseconds are not swamped by thread
+// start-up, and other processes' brief use of the cores is filtered out. Next to it, the
+// process's CPU time (std::clock, all threads; best of the same runs): on a machine shared with
+// other work, where the wall clock of a 2-thread render depends on who else runs, the CPU time of
+// the same work barely does.
 // Error of luminance Y (Rec. 709) against the reference, over a region: all the floor pixels, or
 // those of its dielectric or of its gold tiles:
 //   e = (Y - Y_ref) / max(Y_ref, floor),  floor = 0.01 / exposure (about 12/255 on screen: the

@@ -30,10 +30,10 @@
 //                below, its LTC's part and the rest), and every sample is weighted by the balance
 //                heuristic over the whole plan (multi-sample MIS, Veach 1997 eq. 9.13:
 //                f / (K_s D / I_D + K_d p_d), or f / (N D + K_d p_d) with rejection; the
-//                normalizers in closed form). Where the light is unoccluded the
-//                ratio is exactly 1 (the analytic result, without noise); where the LTC takes
-//                all the samples, f / p varies only by the GGX/LTC mismatch, so the ratio is
-//                close to the visible fraction of the samples.
+//                normalizers in closed form). Where the light is unoccluded the ratio is exactly
+//                1 (the analytic result, without noise); where the LTC takes all the samples,
+//                f / p varies only by the GGX/LTC mismatch, so the ratio is close to the
+//                visible fraction of the samples.
 //   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
 //                density |x - P|^2 / (A |cos theta_x|), for both terms: the common renderer
 //                baseline.
@@ -57,14 +57,14 @@
 //
 // Outputs: `unshadowed` (= shade_polygon_light, shade_polygon_light_two_lobe or
 // shade_polygon_light_cosine_lobe, horizon clipping ltc_space), `ratio` (the estimator above:
-// biased, consistent, exact when nothing occludes the light), `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the
-// same samples and visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's
-// noise instead of the LTC's fitting error), and per term the ratio's two sums
-// (`specular_estimates`, `diffuse_estimates`), for renderers that denoise the shadows as Heitz et
-// al. do: filter each of the two over neighbouring pixels, then ltc::ratio_shading, so that the
-// filter blurs the visibility only, never the analytic shading. A light that faces away
-// (one-sided) or lies below the horizon gives 0 and makes no queries; K = 0 gives the analytic
-// result.
+// biased, consistent, exact when nothing occludes the light), `unbiased` (plain Monte Carlo of
+// the true BRDF, Schlick's Fresnel included, with the same samples and visibility:
+// sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of the LTC's
+// fitting error), and per term the ratio's two sums (`specular_estimates`, `diffuse_estimates`),
+// for renderers that denoise the shadows as Heitz et al. do: filter each of the two over
+// neighbouring pixels, then ltc::ratio_shading, so that the filter blurs the visibility only,
+// never the analytic shading. A light that faces away (one-sided) or lies below the horizon gives
+// 0 and makes no queries; K = 0 gives the analytic result.
 //
 // Visibility callback: bool visible(origin, unit direction, distance), all world space, the
 // distance measured to the light's plane along the direction; offset origin and distance by the
