@@ -77,8 +77,8 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                 }
             },
             label);
-        if (which == method::ratio_ltc_denoised) denoise_ratio(hits, s.eye, W, H, denoise_radius, threads, px);
-        if (which == method::mis_denoised) denoise_radiance(hits, s.eye, W, H, denoise_radius, threads, px);
+        if (which == method::ratio_ltc_denoised) denoise_ratio(hits, s, W, H, denoise_radius, threads, px);
+        if (which == method::mis_denoised) denoise_radiance(hits, s, W, H, denoise_radius, threads, px);
         const double t = ltc_examples::seconds_since(t0);
         r.cpu_seconds = std::min(r.cpu_seconds, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
         r.seconds = std::min(r.seconds, t);
