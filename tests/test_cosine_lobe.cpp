@@ -176,6 +176,7 @@ TEST_CASE("cosine-lobe table between nodes where the split between the lobes jum
     for (const double r : {0.8, 0.84, 0.86})
         for (const double theta : {1.3, 8.0})
             for (const double elevation : {90.0, 60.0, 30.0}) {
+                CAPTURE(elevation);
                 const lobe_errors e = errors_against_ground_truth(theta, r, facing_rectangle(180, elevation, 0.3, 0.3), seed++);
                 worst = std::max(worst, e.other), worst1 = std::max(worst1, e.one);
             }

@@ -242,7 +242,7 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         ltc::shadow_options<float> o = plan_options(plan);
         o.samples = 1024;
         // Per shift: the two ratios, the unbiased estimate, and each term's two sums.
-        const auto m = over_shifts<7>(R, [&](const glm::vec2& shift) {
+        const auto stats = over_shifts<7>(R, [&](const glm::vec2& shift) {
             o.rotation = shift;
             const auto r = shade(s, glm::vec3(1.0f), visible, o);
             // The ratio is ratio_shading of the result's own estimates.
@@ -257,7 +257,7 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
                                          r.specular_estimates.visible,
                                          r.specular_estimates.total};
         });
-        const mean_and_error &diffuse = m[0], &specular = m[1], &unbiased = m[2];
+        const mean_and_error &diffuse = stats[0], &specular = stats[1], &unbiased = stats[2];
         CAPTURE(diffuse.mean, diffuse.error, specular.mean, specular.error, unbiased.mean, unbiased.error);
         // float rounding of the sums of 1024 weights: a few 1e-5 relative, far below the errors.
         CHECK(std::abs(diffuse.mean - e_vis / e_all) <= 4 * diffuse.error + 1e-4);
@@ -271,10 +271,10 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         const auto within = [](const mean_and_error& x, double want, double want_error) {
             return std::abs(x.mean - want) <= 4 * std::hypot(x.error, want_error) + 1e-4 * want;
         };
-        CHECK(within(m[3], e_vis, 0.0));
-        CHECK(within(m[4], e_all, 0.0));
-        CHECK(within(m[5], t_vis.mean, t_vis.standard_error));
-        CHECK(within(m[6], t_all.mean, t_all.standard_error));
+        CHECK(within(stats[3], e_vis, 0.0));
+        CHECK(within(stats[4], e_all, 0.0));
+        CHECK(within(stats[5], t_vis.mean, t_vis.standard_error));
+        CHECK(within(stats[6], t_all.mean, t_all.standard_error));
         if (plan == 2) {
             // Exact samplers: the diffuse ratio's spread is the lattice's and the lobes' mismatch,
             // below a binomial's sqrt(p (1 - p) / K) ~ 0.016.

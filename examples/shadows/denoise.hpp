@@ -6,7 +6,9 @@
 //        its highlights and its tile edges stay sharp, and where no neighbour is shadowed the
 //        sums are the same and the ratio is exactly 1. The sums' f carries no albedo and no
 //        Fresnel term, so they are shared across materials: the diffuse sums (f = cos / pi) over
-//        the whole surface, the specular ones (GGX) between tiles of the same roughness;
+//        the whole surface, the specular ones (GGX) between tiles of the same roughness; but not
+//        between materials with and without a diffuse term (same_surface: their sample plans
+//        differ);
 //   (e)  to (c)'s radiance, with the same weights, its taps of the centre's material only (the
 //        radiance carries the albedo and the Fresnel term): the same filter on plain Monte
 //        Carlo, for a fair comparison; it blurs the shading too.
@@ -17,9 +19,9 @@
 // neither (same_as). No pass crosses the box's edges or the silhouettes; (e)'s passes do not
 // cross an edge between tiles of different materials (tiles of one material meet at corners
 // only). Measured on the default run, (d) with material-only taps as (e) instead: mean error
-// 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16, against 7.6 / 4.9 / 3.9% (README, shadows section). Cost:
-// about 2 (2R + 1) taps of 2 + 2 (d) or 3 (e) values per shaded pixel, timed with the shading
-// (measure.hpp).
+// 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 (README, shadows section). Cost per shaded pixel: two
+// filters of 2 (2R + 1) taps of 2 values each for (d), one of 2 (2R + 1) taps of 3 values for
+// (e); timed with the shading (measure.hpp).
 #pragma once
 
 #include "camera.hpp"
@@ -43,27 +45,32 @@ namespace shadows {
 /// one roughness have the same f), or nothing (the diffuse sums: f = cos / pi for every material).
 enum class same_as { material, roughness, geometry };
 
-/// What the filter compares of two pixels: the hit, its material's roughness, and the distance
-/// from the centre's tangent plane that a tap may have (1% of the centre's distance from the eye).
+/// What the filter compares of two pixels: the hit, its material's roughness, whether its material
+/// has a diffuse term, and the distance from the centre's tangent plane that a tap may have (1% of
+/// the centre's distance from the eye).
 struct filter_pixel {
     const pixel_hit* hit;
     float roughness;
+    bool diffuse;
     float plane_tolerance;
 };
 
 inline std::vector<filter_pixel> filter_pixels(const std::vector<pixel_hit>& hits, const scene& s) {
     std::vector<filter_pixel> f(hits.size());
     for (std::size_t i = 0; i < hits.size(); ++i) {
-        const float roughness = hits[i].shaded() ? s.materials[static_cast<std::size_t>(hits[i].material)].roughness : -1.0f;
-        f[i] = {&hits[i], roughness, 0.01f * glm::length(hits[i].p - s.eye)};
+        const material* m = hits[i].shaded() ? &s.materials[static_cast<std::size_t>(hits[i].material)] : nullptr;
+        f[i] = {&hits[i], m ? m->roughness : -1.0f, m && m->albedo != vec3(0.0f), 0.01f * glm::length(hits[i].p - s.eye)};
     }
     return f;
 }
 
-/// Whether the tap b lies on the surface of the centre pixel a and shares what `match` asks.
+/// Whether the tap b lies on the surface of the centre pixel a and shares what `match` asks. Sums
+/// are shared only between pixels whose materials both have a diffuse term or both have none: the
+/// sample plan differs between them (without a diffuse term no sample is drawn from the light's
+/// area, and the sums are unbiased only within the LTC's support: ltc::ratio_estimates).
 inline bool same_surface(const filter_pixel& a, const filter_pixel& b, same_as match) {
     const pixel_hit &h = *a.hit, &t = *b.hit;
-    if (h.kind != t.kind || !h.shaded()) return false;
+    if (h.kind != t.kind || !h.shaded() || a.diffuse != b.diffuse) return false;
     if (match == same_as::material && h.material != t.material) return false;
     if (match == same_as::roughness && a.roughness != b.roughness) return false;
     if (glm::dot(h.n, t.n) < 0.95f) return false;

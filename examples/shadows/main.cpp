@@ -41,8 +41,10 @@
 //                    plain Monte Carlo, so that (d) is compared with a denoised baseline too.
 //                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma R / 2
 //                    pixels (--denoise-radius R, default 4), on the centre pixel's surface only
-//                    (kind, material, normal, plane), timed with the shading. (d) and (e) draw
-//                    (a)'s and (c)'s random numbers.
+//                    (kind, normal, plane), timed with the shading; (e)'s taps of the centre's
+//                    material, (d)'s diffuse sums shared across materials and its specular sums
+//                    between tiles of one roughness (their f carries no albedo or Fresnel term).
+//                    (d) and (e) draw (a)'s and (c)'s random numbers.
 // With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
 // two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
 // (ltc::analytic_lobes::cosine_lobe), and the samples of (a), (a+) and (d) follow that table's

@@ -6,7 +6,7 @@
 // per term (specular, diffuse); (d) keeps (a)'s two estimates per term for its filter.
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
-//        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~15x more per sample) in
+//        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~8x more per sample) in
 //        proportion to the specular and diffuse shares of the analytic result, combined by the
 //        balance heuristic over the whole plan (every sample serves both terms): up to K rays.
 //   (a+) (a) with an early stop: first K0 = min(K, adaptive_first) samples; where both terms'

@@ -95,7 +95,8 @@ enum class diffuse_sampler { light_area, cosine };
 /// The analytic, unshadowed part: the GGX table's lobe, the opt-in two-lobe table
 /// (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe, which the
 /// estimator only needs as a density) or the opt-in table of an LTC and the cosine
-/// (ltc/shading/cosine_lobe_polygon_light.hpp; the samples follow its LTC).
+/// (ltc/shading/cosine_lobe_polygon_light.hpp; the specular samples follow its LTC, for the
+/// LTC's part of the specular term; the cosine's part joins the diffuse share).
 enum class analytic_lobes { one, two, cosine_lobe };
 
 template <typename T>
