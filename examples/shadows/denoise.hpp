@@ -132,8 +132,9 @@ inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, in
     diff = cross_bilateral(pixels, same_as::geometry, W, H, radius, threads, std::move(diff));
     for (std::size_t i = 0; i < px.size(); ++i) {
         if (!hits[i].shaded()) continue;
-        const ltc::ratio_estimates<double> sp{spec[i][0], spec[i][1]}, d{diff[i][0], diff[i][1]};
-        px[i].radiance = ltc::ratio_shading(px[i].specular, sp) + ltc::ratio_shading(px[i].diffuse, d);
+        const ltc::polygon_light_result<double> r = ltc::ratio_shading(
+            px[i].analytic, ltc::ratio_estimates<double>{spec[i][0], spec[i][1]}, {diff[i][0], diff[i][1]});
+        px[i].radiance = r.specular + r.diffuse;
     }
 }
 

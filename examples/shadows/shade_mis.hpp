@@ -43,7 +43,7 @@ struct shaded_pixel {
     std::size_t rays = 0;           // visibility queries made
     // The ratio methods' analytic terms and their two sums, of the first call for (a+) (read by
     // (d)'s filter only: denoise.hpp).
-    dvec3 specular{0.0}, diffuse{0.0};
+    ltc::polygon_light_result<double> analytic;
     ltc::ratio_estimates<double> specular_estimates, diffuse_estimates;
 };
 

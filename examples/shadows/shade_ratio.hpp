@@ -104,8 +104,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, lobes, rng);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
-    out.specular = dvec3(r.unshadowed.specular);
-    out.diffuse = dvec3(r.unshadowed.diffuse);
+    out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
     out.specular_estimates = {r.specular_estimates.visible, r.specular_estimates.total};
     out.diffuse_estimates = {r.diffuse_estimates.visible, r.diffuse_estimates.total};
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
