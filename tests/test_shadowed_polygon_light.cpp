@@ -3,7 +3,10 @@
 //   (a) nothing occludes: the ratio is exactly 1, so the result is the analytic shading bit for
 //       bit, for every sample plan and every K (with each analytic part: one lobe, two lobes, an
 //       LTC and the cosine);
-//       each sample makes one query; each term's two sums are equal;
+//       each sample makes one query; each term's two sums are equal; the estimates' analytic
+//       values make up the analytic shading (F0 a_0 + (1 - F0) a_1, the form factor), and
+//       corrected_specular of the pixel's own estimates is the unbiased estimate (up to float
+//       rounding);
 //   (b) everything occludes: 0; a light facing away (one-sided) or degenerate input: 0 and no
 //       query;
 //   (c) a half-space occluder through the shading point (visible: d . m >= 0), whose visible part
@@ -14,7 +17,8 @@
 //         library's Monte Carlo ground truth;
 //       - each term's two sums (ratio_estimates) estimate the integrals of f V and f: E(visible)
 //         and E(light), the GGX lobe's integrals over the visible part and the light (ground
-//         truth);
+//         truth), and the sums of Schlick's part those of f (1 - V.H)^5 (ground truth of that
+//         product);
 //       for five sample plans (plan_options: the LTC share by rejection or exactly, the diffuse
 //       share from the area or the exact cosine sampler, area alone, the LTC of the table of an
 //       LTC and the cosine). Tolerances: 4 standard errors of the mean over R independent
@@ -61,6 +65,20 @@ scene make_scene(float view_deg, float roughness) {
 }
 
 const glm::vec3 kAlbedo(0.5f), kRadiance(2.0f);
+
+/// The GGX lobe times (1 - V.H)^5, Schlick's (1 - F0) part: the integrand of the sums in
+/// specular_fresnel_estimates, for the ground truth (sampled as GGX).
+template <typename T>
+struct ggx_schlick_part {
+    using vec3 = glm::vec<3, T>;
+    static T eval(const vec3& V, const vec3& L, T alpha) {
+        const vec3 h = glm::normalize(V + L);
+        const T m = T(1) - glm::clamp(glm::dot(V, h), T(0), T(1));
+        return ltc::brdf::ggx<T>::eval(V, L, alpha) * (m * m * m * m * m);
+    }
+    static T pdf(const vec3& V, const vec3& L, T alpha) { return ltc::brdf::ggx<T>::pdf(V, L, alpha); }
+    static vec3 sample(const vec3& V, const glm::vec<2, T>& u, T alpha) { return ltc::brdf::ggx<T>::sample(V, u, alpha); }
+};
 
 template <typename Visible>
 ltc::shadowed_polygon_light_result<float> shade(const scene& s, const glm::vec3& F0, Visible&& visible,
@@ -153,8 +171,22 @@ TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly
             CHECK(r.ratio.diffuse == r.unshadowed.diffuse);
             // Every sample seen: the two sums of each term are the same sum.
             CHECK(r.specular_estimates.visible == r.specular_estimates.total);
+            CHECK(r.specular_fresnel_estimates.visible == r.specular_fresnel_estimates.total);
             CHECK(r.diffuse_estimates.visible == r.diffuse_estimates.total);
             CHECK(r.specular_estimates.total + r.diffuse_estimates.total > 0.0f);
+            // The analytic values: the diffuse term's bit for bit (polygon_light_radiance's
+            // product), the specular term's by Hill's split, a few float roundings of positive
+            // terms (< 1e-6 relative).
+            CHECK(r.unshadowed.diffuse == kAlbedo * kRadiance * r.diffuse_estimates.analytic);
+            const glm::vec3 split = kRadiance * (glm::vec3(0.04f) * r.specular_estimates.analytic +
+                                                 glm::vec3(0.96f) * r.specular_fresnel_estimates.analytic);
+            CHECK(split.x == Approx(r.unshadowed.specular.x).epsilon(1e-6));
+            // Unfiltered, the corrected specular term is the unbiased estimate: the same sums of
+            // K <= 16 positive float terms, grouped by F0's part (~K 2^-24 relative).
+            const glm::vec3 corrected = ltc::corrected_specular(
+                glm::vec3(0.04f), kRadiance, r.specular_estimates.analytic, r.specular_fresnel_estimates.analytic,
+                r.specular_estimates, r.specular_fresnel_estimates);
+            CHECK(corrected.x == Approx(r.unbiased.specular.x).epsilon(1e-5));
             // K queries, or a random number of hits averaging K_s where the specular share is
             // drawn by rejection (at most 8 K_s draws).
             CHECK(r.rays == calls);
@@ -170,6 +202,17 @@ TEST_CASE("shadowed polygon light: ratio_shading from a term's two estimates", "
     CHECK(ltc::ratio_shading(unshadowed, ltc::ratio_estimates<float>{0.0f, 2.0f}) == glm::vec3(0.0f));
     // No sample carried weight: the analytic term.
     CHECK(ltc::ratio_shading(unshadowed, ltc::ratio_estimates<float>{}) == unshadowed);
+}
+
+TEST_CASE("shadowed polygon light: corrected_specular from both parts' estimates", "[shadows]") {
+    // radiance (F0 a_0 visible_0 / analytic_0 + (1 - F0) a_1 visible_1 / analytic_1), exact in
+    // binary: 2 (0.25 * 2 * 0.5 + 0.75 * 1 * 0.5) = 1.25.
+    const glm::vec3 F0(0.25f), radiance(2.0f);
+    const ltc::ratio_estimates<float> s0{0.5f, 7.0f, 1.0f}, s1{0.25f, 7.0f, 0.5f};
+    CHECK(ltc::corrected_specular(F0, radiance, 2.0f, 1.0f, s0, s1) == glm::vec3(1.25f));
+    // The totals play no part; a part without an analytic value gives 0.
+    CHECK(ltc::corrected_specular(F0, radiance, 2.0f, 1.0f, s0, {0.25f, 0.0f, 0.0f}) == glm::vec3(0.5f));
+    CHECK(ltc::corrected_specular(F0, radiance, 2.0f, 1.0f, ltc::ratio_estimates<float>{}, {}) == glm::vec3(0.0f));
 }
 
 TEST_CASE("shadowed polygon light: occluded, facing away and degenerate input", "[shadows]") {
@@ -230,6 +273,8 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
     const double alpha = double(s.roughness) * s.roughness;
     const auto t_all = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, alpha, light.data(), light.size(), opt);
     const auto t_vis = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, alpha, vis.data(), vis.size(), opt);
+    const auto t_all_f = ltc::ground_truth::integrate(ggx_schlick_part<double>{}, V, alpha, light.data(), light.size(), opt);
+    const auto t_vis_f = ltc::ground_truth::integrate(ggx_schlick_part<double>{}, V, alpha, vis.data(), vis.size(), opt);
     const double truth_ratio = t_vis.mean / t_all.mean;
     const double truth_ratio_error =
         truth_ratio * std::hypot(t_vis.standard_error / t_vis.mean, t_all.standard_error / t_all.mean);
@@ -242,20 +287,22 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         ltc::shadow_options<float> o = plan_options(plan);
         o.samples = 1024;
         // Per shift: the two ratios, the unbiased estimate, and each term's two sums.
-        const auto stats = over_shifts<7>(R, [&](const glm::vec2& shift) {
+        const auto stats = over_shifts<9>(R, [&](const glm::vec2& shift) {
             o.rotation = shift;
             const auto r = shade(s, glm::vec3(1.0f), visible, o);
             // The ratio is ratio_shading of the result's own estimates.
             const auto again = ltc::ratio_shading(r.unshadowed, r.specular_estimates, r.diffuse_estimates);
             CHECK(r.ratio.specular == again.specular);
             CHECK(r.ratio.diffuse == again.diffuse);
-            return std::array<double, 7>{double(r.ratio.diffuse.x) / r.unshadowed.diffuse.x,
+            return std::array<double, 9>{double(r.ratio.diffuse.x) / r.unshadowed.diffuse.x,
                                          double(r.ratio.specular.x) / r.unshadowed.specular.x,
                                          double(r.unbiased.specular.x),
                                          r.diffuse_estimates.visible,
                                          r.diffuse_estimates.total,
                                          r.specular_estimates.visible,
-                                         r.specular_estimates.total};
+                                         r.specular_estimates.total,
+                                         r.specular_fresnel_estimates.visible,
+                                         r.specular_fresnel_estimates.total};
         });
         const mean_and_error &diffuse = stats[0], &specular = stats[1], &unbiased = stats[2];
         CAPTURE(diffuse.mean, diffuse.error, specular.mean, specular.error, unbiased.mean, unbiased.error);
@@ -275,6 +322,8 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
         CHECK(within(stats[4], e_all, 0.0));
         CHECK(within(stats[5], t_vis.mean, t_vis.standard_error));
         CHECK(within(stats[6], t_all.mean, t_all.standard_error));
+        CHECK(within(stats[7], t_vis_f.mean, t_vis_f.standard_error));
+        CHECK(within(stats[8], t_all_f.mean, t_all_f.standard_error));
         if (plan == 2) {
             // Exact samplers: the diffuse ratio's spread is the lattice's and the lobes' mismatch,
             // below a binomial's sqrt(p (1 - p) / K) ~ 0.016.

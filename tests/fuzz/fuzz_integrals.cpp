@@ -194,10 +194,16 @@ void run(FuzzedDataProvider& in) {
             require_finite(t->specular, "shadowed specular");
             require_finite(t->diffuse, "shadowed diffuse");
         }
-        for (const auto* e : {&r.specular_estimates, &r.diffuse_estimates}) {
+        for (const auto* e : {&r.specular_estimates, &r.specular_fresnel_estimates, &r.diffuse_estimates}) {
             require_finite(e->visible, "shadowed estimate");
             require_finite(e->total, "unshadowed estimate");
+            require_finite(e->analytic, "analytic estimate");
         }
+        // The corrected specular term, of the pixel's own estimates (its filter-free use).
+        require_finite(ltc::corrected_specular(vec3(T(0.04)), vec3(T(1)), r.specular_estimates.analytic,
+                                               r.specular_fresnel_estimates.analytic, r.specular_estimates,
+                                               r.specular_fresnel_estimates),
+                       "corrected specular");
     }
 
     check_distribution<T, ltc::uniform_sphere<T>>(pv, n, m, use_inverse, u);
