@@ -4,11 +4,16 @@
 //        times the ratio of the filtered sums (ltc::ratio_shading). This is how Heitz, Hill and
 //        McGuire (I3D 2018) denoise: the filter blurs the visibility only; the analytic shading,
 //        its highlights and its tile edges stay sharp, and where no neighbour is shadowed the
-//        sums are the same and the ratio is exactly 1. The sums' f carries no albedo and no
+//        sums are the same and the ratio is exactly 1 (with --ltc-correction off; by default,
+//        below, the specular term keeps the filtered GGX / LTC mismatch there). The sums' f carries no albedo and no
 //        Fresnel term, so they are shared across materials: the diffuse sums (f = cos / pi) over
 //        the whole surface, the specular ones (GGX) between tiles of the same roughness; but not
 //        between materials with and without a diffuse term (same_surface: their sample plans
-//        differ);
+//        differ); by default (--ltc-correction on) the specular term instead from the filtered
+//        estimates of f V and their analytic values, per part of Hill's Fresnel split (f and
+//        f (1 - V.H)^5: ltc::corrected_specular), which corrects the LTC's fitting error as well
+//        as the shadows (the pixel's own analytic values times the filtered Monte Carlo estimate
+//        relative to the filtered analytic one);
 //   (e)  to (c)'s radiance, with the same weights, its taps of the centre's material only (the
 //        radiance carries the albedo and the Fresnel term): the same filter on plain Monte
 //        Carlo, for a fair comparison; it blurs the shading too.
@@ -18,10 +23,11 @@
 // centre's distance from its tangent plane; and as above, the same material, roughness or
 // neither (same_as). No pass crosses the box's edges or the silhouettes; (e)'s passes do not
 // cross an edge between tiles of different materials (tiles of one material meet at corners
-// only). Measured on the default run, (d) with material-only taps as (e) instead: mean error
-// 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 (README, shadows section). Cost per shaded pixel: two
-// filters of 2 (2R + 1) taps of 2 values each for (d), one of 2 (2R + 1) taps of 3 values for
-// (e); timed with the shading (measure.hpp).
+// only). Measured on the default run of an earlier commit (R = 4, no LTC correction), (d) with
+// material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 against
+// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K). Cost per shaded pixel: two filters
+// of 2 (2R + 1) taps, of 4 values (specular) and 2 (diffuse) for (d), one of 2 (2R + 1) taps of
+// 3 values for (e); timed with the shading (measure.hpp).
 #pragma once
 
 #include "camera.hpp"
@@ -33,12 +39,25 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 namespace shadows {
+
+/// The filter's radius for K samples per pixel ((d)) or iterations ((e)) where --denoise-radius
+/// gives none: R = 4 (K / 4)^(-1/6), rounded; a heuristic. A kernel smoother over a 2-D image
+/// balances its squared bias (~ R^4 where the signal is smooth) against its variance
+/// (~ 1 / (K R^2)) at R ~ K^(-1/6) (the optimal bandwidth n^(-1/(d + 4)) of Wand and Jones,
+/// "Kernel Smoothing", 1995, ch. 4, d = 2); at edges (the penumbrae) the squared bias grows as R
+/// and the rate is K^(-1/3): the slower rate is taken, anchored at R = 4 for K = 4, the radius
+/// chosen before measuring. K = 1 gives 5, K = 2 to 8 give 4, K = 16 to 64 give 3, K = 128 and
+/// 256 give 2. Measured against fixed radii: README, shadows section.
+inline int auto_radius(int K) {
+    return std::max(1, static_cast<int>(std::lround(4.0 * std::pow(std::max(K, 1) / 4.0, -1.0 / 6.0))));
+}
 
 /// What a tap must share with the centre pixel besides its surface (kind, normal, plane): its
 /// material (any value), its roughness (the specular sums: f is GGX without Fresnel, so tiles of
@@ -64,25 +83,32 @@ inline std::vector<filter_pixel> filter_pixels(const std::vector<pixel_hit>& hit
     return f;
 }
 
-/// Whether the tap b lies on the surface of the centre pixel a and shares what `match` asks. Sums
-/// are shared only between pixels whose materials both have a diffuse term or both have none: the
+/// Whether the tap b lies on the surface of the centre pixel a (kind, normal, plane). Sums are
+/// shared only between pixels whose materials both have a diffuse term or both have none: the
 /// sample plan differs between them (without a diffuse term no sample is drawn from the light's
 /// area, and the sums are unbiased only within the LTC's support: ltc::ratio_estimates).
-inline bool same_surface(const filter_pixel& a, const filter_pixel& b, same_as match) {
+inline bool same_surface(const filter_pixel& a, const filter_pixel& b) {
     const pixel_hit &h = *a.hit, &t = *b.hit;
     if (h.kind != t.kind || !h.shaded() || a.diffuse != b.diffuse) return false;
-    if (match == same_as::material && h.material != t.material) return false;
-    if (match == same_as::roughness && a.roughness != b.roughness) return false;
     if (glm::dot(h.n, t.n) < 0.95f) return false;
     return std::abs(glm::dot(h.n, t.p - h.p)) <= a.plane_tolerance;
 }
 
+/// Whether the tap b, on a's surface, shares what `match` asks.
+inline bool shares(const filter_pixel& a, const filter_pixel& b, same_as match) {
+    if (match == same_as::material) return a.hit->material == b.hit->material;
+    return match != same_as::roughness || a.roughness == b.roughness;
+}
+
 /// One pass of the separable filter along x (dx = 1) or y: out[i] = sum_j w_ij in[j] / sum_j w_ij
-/// over the taps j on i's surface (the centre always is).
-template <std::size_t N>
-void filter_pass(const std::vector<filter_pixel>& pixels, same_as match, int W, int H, int radius, bool along_x,
-                 unsigned threads, const std::vector<std::array<double, N>>& in,
+/// over the taps j on i's surface (the centre always is) that share what match_a asks for the
+/// first NA values, what match_b asks for the others: two filters in one pass over the taps
+/// (each value's sum and weights are those of a pass of its own, bit for bit).
+template <std::size_t N, std::size_t NA>
+void filter_pass(const std::vector<filter_pixel>& pixels, same_as match_a, same_as match_b, int W, int H, int radius,
+                 bool along_x, unsigned threads, const std::vector<std::array<double, N>>& in,
                  std::vector<std::array<double, N>>& out) {
+    static_assert(NA <= N, "the first NA of N values");
     std::vector<double> g(static_cast<std::size_t>(radius) + 1);
     const double sigma = 0.5 * radius;
     for (int k = 0; k <= radius; ++k) g[static_cast<std::size_t>(k)] = std::exp(-0.5 * k * k / (sigma * sigma));
@@ -92,50 +118,95 @@ void filter_pass(const std::vector<filter_pixel>& pixels, same_as match, int W, 
             out[i] = in[i];
             if (!pixels[i].hit->shaded()) continue;
             std::array<double, N> sum{};
-            double weight = 0;
+            double weight_a = 0, weight_b = 0;
             for (int k = -radius; k <= radius; ++k) {
                 const int xx = along_x ? x + k : x, yy = along_x ? y : y + k;
                 if (xx < 0 || xx >= W || yy < 0 || yy >= H) continue;
                 const std::size_t j = static_cast<std::size_t>(yy) * W + xx;
-                if (j != i && !same_surface(pixels[i], pixels[j], match)) continue;
+                if (j != i && !same_surface(pixels[i], pixels[j])) continue;
                 const double w = g[static_cast<std::size_t>(std::abs(k))];
-                weight += w;
-                for (std::size_t c = 0; c < N; ++c) sum[c] += w * in[j][c];
+                if (j == i || shares(pixels[i], pixels[j], match_a)) {
+                    weight_a += w;
+                    for (std::size_t c = 0; c < NA; ++c) sum[c] += w * in[j][c];
+                }
+                if (NA < N && (j == i || shares(pixels[i], pixels[j], match_b))) {
+                    weight_b += w;
+                    for (std::size_t c = NA; c < N; ++c) sum[c] += w * in[j][c];
+                }
             }
-            for (std::size_t c = 0; c < N; ++c) out[i][c] = sum[c] / weight;
+            for (std::size_t c = 0; c < N; ++c) out[i][c] = sum[c] / (c < NA ? weight_a : weight_b);
         }
     });
 }
 
 /// The filter (rows, then columns) of N values per pixel, its taps on the centre's surface and
-/// sharing what `match` asks.
-template <std::size_t N>
-std::vector<std::array<double, N>> cross_bilateral(const std::vector<filter_pixel>& pixels, same_as match, int W, int H,
-                                                   int radius, unsigned threads, std::vector<std::array<double, N>> v) {
+/// sharing what match_a asks for the first NA values, what match_b asks for the others.
+template <std::size_t N, std::size_t NA>
+std::vector<std::array<double, N>> cross_bilateral(const std::vector<filter_pixel>& pixels, same_as match_a,
+                                                   same_as match_b, int W, int H, int radius, unsigned threads,
+                                                   std::vector<std::array<double, N>> v) {
     if (radius <= 0) return v;
     std::vector<std::array<double, N>> rows(v.size());
-    filter_pass(pixels, match, W, H, radius, true, threads, v, rows);
-    filter_pass(pixels, match, W, H, radius, false, threads, rows, v);
+    filter_pass<N, NA>(pixels, match_a, match_b, W, H, radius, true, threads, v, rows);
+    filter_pass<N, NA>(pixels, match_a, match_b, W, H, radius, false, threads, rows, v);
     return v;
 }
 
+/// (d)'s values filtered in one pass over the taps: NS specular values per pixel (taps of the
+/// centre's roughness), then the diffuse sums {visible, total} (taps anywhere on its surface).
+template <std::size_t NS, typename SpecularValues>
+std::vector<std::array<double, NS + 2>> filter_estimates(const std::vector<filter_pixel>& pixels,
+                                                         const std::vector<shaded_pixel>& px,
+                                                         SpecularValues&& specular_values, int W, int H, int radius,
+                                                         unsigned threads) {
+    std::vector<std::array<double, NS + 2>> v(px.size());
+    for (std::size_t i = 0; i < px.size(); ++i) {
+        const std::array<double, NS> a = specular_values(px[i]);
+        for (std::size_t c = 0; c < NS; ++c) v[i][c] = a[c];
+        v[i][NS] = px[i].diffuse_estimates.visible;
+        v[i][NS + 1] = px[i].diffuse_estimates.total;
+    }
+    return cross_bilateral<NS + 2, NS>(pixels, same_as::roughness, same_as::geometry, W, H, radius, threads,
+                                       std::move(v));
+}
+
 /// (d): each pixel's radiance from its analytic terms and the filtered estimates (file comment).
-inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, int W, int H, int radius,
+inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, int W, int H, int radius, bool correct,
                           unsigned threads, std::vector<shaded_pixel>& px) {
     const std::vector<filter_pixel> pixels = filter_pixels(hits, s);
-    std::vector<std::array<double, 2>> spec(px.size()), diff(px.size());
-    for (std::size_t i = 0; i < px.size(); ++i) {
-        spec[i] = {px[i].specular_estimates.visible, px[i].specular_estimates.total};
-        diff[i] = {px[i].diffuse_estimates.visible, px[i].diffuse_estimates.total};
+    const auto diffuse = [&](std::size_t i, double visible, double total) {
+        return ltc::ratio_shading(px[i].analytic.diffuse, ltc::ratio_estimates<double>{visible, total});
+    };
+    if (correct) {
+        // {visible, analytic} of both parts of the specular term: f and f (1 - V.H)^5.
+        const auto v = filter_estimates<4>(
+            pixels, px,
+            [](const shaded_pixel& p) {
+                const auto &e = p.specular_estimates, &ef = p.specular_fresnel_estimates;
+                return std::array<double, 4>{e.visible, e.analytic, ef.visible, ef.analytic};
+            },
+            W, H, radius, threads);
+        for (std::size_t i = 0; i < px.size(); ++i) {
+            if (!hits[i].shaded()) continue;
+            const material& m = s.materials[static_cast<std::size_t>(hits[i].material)];
+            px[i].radiance = ltc::corrected_specular(dvec3(m.f0), dvec3(s.light_radiance),
+                                                     px[i].specular_estimates.analytic,
+                                                     px[i].specular_fresnel_estimates.analytic,
+                                                     {v[i][0], 0.0, v[i][1]}, {v[i][2], 0.0, v[i][3]}) +
+                             diffuse(i, v[i][4], v[i][5]);
+        }
+        return;
     }
-    spec = cross_bilateral(pixels, same_as::roughness, W, H, radius, threads, std::move(spec));
-    diff = cross_bilateral(pixels, same_as::geometry, W, H, radius, threads, std::move(diff));
-    for (std::size_t i = 0; i < px.size(); ++i) {
-        if (!hits[i].shaded()) continue;
-        const ltc::polygon_light_result<double> r = ltc::ratio_shading(
-            px[i].analytic, ltc::ratio_estimates<double>{spec[i][0], spec[i][1]}, {diff[i][0], diff[i][1]});
-        px[i].radiance = r.specular + r.diffuse;
-    }
+    const auto v = filter_estimates<2>(
+        pixels, px,
+        [](const shaded_pixel& p) {
+            return std::array<double, 2>{p.specular_estimates.visible, p.specular_estimates.total};
+        },
+        W, H, radius, threads);
+    for (std::size_t i = 0; i < px.size(); ++i)
+        if (hits[i].shaded())
+            px[i].radiance = ltc::ratio_shading(px[i].analytic.specular, ltc::ratio_estimates<double>{v[i][0], v[i][1]}) +
+                             diffuse(i, v[i][2], v[i][3]);
 }
 
 /// (e): each pixel's radiance filtered (its taps of the centre's material).
@@ -143,7 +214,8 @@ inline void denoise_radiance(const std::vector<pixel_hit>& hits, const scene& s,
                              unsigned threads, std::vector<shaded_pixel>& px) {
     std::vector<std::array<double, 3>> v(px.size());
     for (std::size_t i = 0; i < px.size(); ++i) v[i] = {px[i].radiance.r, px[i].radiance.g, px[i].radiance.b};
-    v = cross_bilateral(filter_pixels(hits, s), same_as::material, W, H, radius, threads, std::move(v));
+    v = cross_bilateral<3, 3>(filter_pixels(hits, s), same_as::material, same_as::material, W, H, radius, threads,
+                              std::move(v));
     for (std::size_t i = 0; i < px.size(); ++i)
         if (hits[i].shaded()) px[i].radiance = dvec3(v[i][0], v[i][1], v[i][2]);
 }

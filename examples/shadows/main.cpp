@@ -2,7 +2,8 @@
 // ratio-estimator shadows (ltc::shade_polygon_light_shadowed) against plain Monte Carlo.
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
-//           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST] [--denoise-radius R]
+//           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]
+//           [--denoise-radius R|auto] [--ltc-correction on|off]
 //           [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E]
 //           [--lobes 1|2|cosine] [--help]
 //
@@ -37,10 +38,15 @@
 //                    filtered over neighbouring pixels, each on its own, and the ratio of the
 //                    filtered values applied to the pixel's analytic terms (ltc::ratio_shading):
 //                    Heitz, Hill and McGuire's denoising, which blurs the shadows, not the shading;
+//                    by default (--ltc-correction on) the specular term instead takes the
+//                    filtered estimates of the shadowed integrals relative to their analytic
+//                    values, per part of Hill's Fresnel split (ltc::corrected_specular), which
+//                    corrects the LTC's fitting error as well;
 //   (e)  mis_denoised  (c), then its radiance filtered with the same weights: the same denoiser on
 //                    plain Monte Carlo, so that (d) is compared with a denoised baseline too.
 //                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma R / 2
-//                    pixels (--denoise-radius R, default 4), on the centre pixel's surface only
+//                    pixels (--denoise-radius R; by default R = 4 (K / 4)^(-1/6) rounded, K the
+//                    samples or iterations: denoise.hpp's auto_radius), on the centre pixel's surface only
 //                    (kind, normal, plane), timed with the shading; (e)'s taps of the centre's
 //                    material, (d)'s diffuse sums shared across materials and its specular sums
 //                    between tiles of one roughness (their f carries no albedo or Fresnel term).
@@ -168,7 +174,7 @@ int main(int argc, char** argv) {
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr
     const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
-                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 0, 1, "reference");
+                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 0, false, 1, "reference");
     std::size_t nonfinite = ref.nonfinite;
     const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
     std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "
@@ -188,7 +194,8 @@ int main(int argc, char** argv) {
         const method m = methods[k];
         for (int spp : *lists[k]) {
             const method_image r =
-                render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.denoise_radius);
+                render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.denoise_radius,
+                              opt.ltc_correction);
             nonfinite += r.nonfinite;
             const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
             const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
@@ -208,7 +215,8 @@ int main(int argc, char** argv) {
     // (a)'s, (a+)'s and (d)'s errors split into their noise and bias: a second render of each with other seeds.
     for (seed_pair& p : pairs) {
         const method_image second = render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp,
-                                                  mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.denoise_radius, 1);
+                                                  mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.denoise_radius,
+                                                  opt.ltc_correction, 1);
         p.second = second.img;
         nonfinite += second.nonfinite;
     }

@@ -45,12 +45,14 @@ struct method_image {
 };
 
 /// Every pixel by `which` at `spp`, seeded by (seed, which, spp, pixel), the ratio methods' analytic
-/// part with `lobes`, (d)'s and (e)'s filter of radius denoise_radius (denoise.hpp); timed with the
+/// part with `lobes`, (d)'s and (e)'s filter of radius denoise_radius (-1: auto_radius(spp);
+/// denoise.hpp), (d)'s specular term corrected for the LTC's error with ltc_correction; timed with the
 /// filter (file comment) over up to max_runs runs (1: the reference, the second seeds). With a
 /// label: a progress bar on stderr.
 inline method_image render_method(const scene& s, const tracer& tr, const std::vector<pixel_hit>& hits, int W, int H,
                                   unsigned threads, method which, int spp, std::uint64_t seed, ltc::analytic_lobes lobes,
-                                  int denoise_radius, int max_runs = 5, const char* label = nullptr) {
+                                  int denoise_radius, bool ltc_correction, int max_runs = 5,
+                                  const char* label = nullptr) {
     const std::size_t count = static_cast<std::size_t>(W) * H;
     // (a+) draws (a)'s random numbers (common random numbers: where K <= K0 its first call is (a)'s
     // call), so that the difference of the two measures its early stop with little noise.
@@ -59,6 +61,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
     const method seeded_as = which == method::ratio_ltc_adaptive || which == method::ratio_ltc_denoised ? method::ratio_ltc
                              : which == method::mis_denoised                                          ? method::mis
                                                                                                       : which;
+    const int radius = denoise_radius >= 0 ? denoise_radius : auto_radius(spp);
     const std::uint64_t run =
         mix_seed(mix_seed(seed, static_cast<std::uint64_t>(seeded_as)), static_cast<std::uint64_t>(spp));
     std::vector<shaded_pixel> px(count);
@@ -77,8 +80,8 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                 }
             },
             label);
-        if (which == method::ratio_ltc_denoised) denoise_ratio(hits, s, W, H, denoise_radius, threads, px);
-        if (which == method::mis_denoised) denoise_radiance(hits, s, W, H, denoise_radius, threads, px);
+        if (which == method::ratio_ltc_denoised) denoise_ratio(hits, s, W, H, radius, ltc_correction, threads, px);
+        if (which == method::mis_denoised) denoise_radiance(hits, s, W, H, radius, threads, px);
         const double t = ltc_examples::seconds_since(t0);
         r.cpu_seconds = std::min(r.cpu_seconds, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
         r.seconds = std::min(r.seconds, t);

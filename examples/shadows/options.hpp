@@ -22,7 +22,8 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};   // (c): iterations
     std::vector<int> denoised_spp{1, 2, 4, 8, 16, 32, 64};        // (d): K
     std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
-    int denoise_radius = 4;  // (d) and (e): the filter's half-width in pixels (denoise.hpp)
+    int denoise_radius = -1;  // (d) and (e): the filter's half-width in pixels, -1: auto_radius(K) (denoise.hpp)
+    bool ltc_correction = true;  // (d): the specular term's LTC error corrected too (ltc::corrected_specular)
     int reference_spp = 4096;  // (c)'s iterations for the reference
     ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b), (d): the analytic part's table
 };
@@ -31,8 +32,8 @@ inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]\n"
         "          [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]\n"
-        "          [--denoise-radius R] [--reference-spp N] [--threads K] [--out DIR] [--seed S]\n"
-        "          [--exposure E] [--lobes 1|2|cosine] [--help]\n"
+        "          [--denoise-radius R|auto] [--ltc-correction on|off] [--reference-spp N] [--threads K]\n"
+        "          [--out DIR] [--seed S] [--exposure E] [--lobes 1|2|cosine] [--help]\n"
         "\n"
         "Renders a tiled GGX floor (dielectric and gold tiles) and two grey occluders lit by one quad\n"
         "light, with shadows traced by Embree, six ways: (a) LTC + ratio-estimator shadows\n"
@@ -41,7 +42,8 @@ inline void print_help(const char* argv0) {
         "where they all agree (lit or in umbra), else K more; (b) the same ratio sampling the light's\n"
         "area; (c) plain Monte Carlo with MIS (one GGX-or-cosine and one light sample per\n"
         "iteration); (d) (a) with its two estimates per term denoised by a cross-bilateral filter\n"
-        "(Heitz et al. 2018's denoising: the shadows blurred, not the shading); (e) (c) with the\n"
+        "(Heitz et al. 2018's denoising: the shadows blurred, not the shading), by default its\n"
+        "specular term also corrected for the LTC's fitting error by the same samples; (e) (c) with the\n"
         "same filter on its radiance. The reference is (c) at --reference-spp. Writes into DIR:\n"
         "reference.png; M_Nspp.png for each method M (ratio_ltc, ratio_ltc_adaptive, ratio_area,\n"
         "mis, ratio_ltc_denoised, mis_denoised) and N = 1, 4, 16 (those in the lists);\n"
@@ -61,7 +63,16 @@ inline void print_help(const char* argv0) {
         "  --denoised-spp LIST K of (d) (default 1,2,4,...,64)\n"
         "  --denoised-mis-spp LIST\n"
         "                      iterations of (e) (default 1,2,4,...,256)\n"
-        "  --denoise-radius R  (d)'s and (e)'s filter: 2 R + 1 taps per pass, 0 none (default 4)\n"
+        "  --denoise-radius R|auto\n"
+        "                      (d)'s and (e)'s filter: 2 R + 1 taps per pass, 0 none; auto (the\n"
+        "                      default): R = 4 (K / 4)^(-1/6) rounded, K the samples or iterations\n"
+        "                      (5 at K = 1, 4 at 2-8, 3 at 16-64, 2 at 128-256)\n"
+        "  --ltc-correction on|off\n"
+        "                      (d)'s specular term: the pixel's analytic values times the filtered\n"
+        "                      Monte Carlo estimates of the shadowed integrals relative to theirs,\n"
+        "                      which corrects the LTC's fitting error too (ltc::corrected_specular;\n"
+        "                      default on), or off: the analytic term times the ratio of the\n"
+        "                      filtered sums (ltc::ratio_shading, Heitz et al. 2018)\n"
         "  --reference-spp N   iterations of the reference (default 4096)\n"
         "  --lobes 1|2|cosine  the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
         "                      (default), the two-lobe table (ltc::analytic_lobes::two) or the table of\n"
@@ -118,7 +129,17 @@ inline int parse_args(int argc, char** argv, options& o) {
                 return option_status::bad;
             return option_status::taken;
         }
+        if (a == "--ltc-correction") {
+            const std::string t(v.text);
+            if (t != "on" && t != "off") return option_status::bad;
+            o.ltc_correction = t == "on";
+            return option_status::taken;
+        }
         if (a == "--denoise-radius") {
+            if (std::string(v.text) == "auto") {
+                o.denoise_radius = -1;
+                return option_status::taken;
+            }
             if (!v.integer_in(0, 64)) return option_status::bad;
             o.denoise_radius = static_cast<int>(v.number);
             return option_status::taken;

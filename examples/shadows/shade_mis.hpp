@@ -41,10 +41,11 @@ struct shaded_pixel {
     dvec3 radiance{0.0};
     double luminance_variance = 0;  // of the estimate (the mean over the iterations)
     std::size_t rays = 0;           // visibility queries made
-    // The ratio methods' analytic terms and their two sums, of the first call for (a+) (read by
+    // The ratio methods' analytic terms and their estimates (each term's two sums and analytic
+    // value; the specular term's also for Schlick's part), of the first call for (a+) (read by
     // (d)'s filter only: denoise.hpp).
     ltc::polygon_light_result<double> analytic;
-    ltc::ratio_estimates<double> specular_estimates, diffuse_estimates;
+    ltc::ratio_estimates<double> specular_estimates, diffuse_estimates, specular_fresnel_estimates;
 };
 
 /// Radiance towards the camera at one pixel by `iterations` MIS iterations (file comment).

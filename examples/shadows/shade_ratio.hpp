@@ -105,8 +105,12 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
-    out.specular_estimates = {r.specular_estimates.visible, r.specular_estimates.total};
-    out.diffuse_estimates = {r.diffuse_estimates.visible, r.diffuse_estimates.total};
+    const auto to_double = [](const ltc::ratio_estimates<float>& e) {
+        return ltc::ratio_estimates<double>{e.visible, e.total, e.analytic};
+    };
+    out.specular_estimates = to_double(r.specular_estimates);
+    out.specular_fresnel_estimates = to_double(r.specular_fresnel_estimates);
+    out.diffuse_estimates = to_double(r.diffuse_estimates);
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;

@@ -69,8 +69,9 @@
 // ltc::corrected_specular corrects the LTC's fitting error as well as the shadows (the filtered
 // estimate of the shadowed integral relative to the analytic one, per part of Hill's Fresnel
 // split; in the shadows example it cut the denoised result's mean error from 4.9% to 3.3% at
-// K = 4, and on the gold tiles, where the LTC is 9% off, from 11.4% to 4.0%). A light that faces away (one-sided) or lies below the horizon gives
-// 0 and makes no queries; K = 0 gives the analytic result.
+// K = 4, and on the gold tiles, where the LTC is 9% off, from 11.4% to 4.0%). A light that
+// faces away (one-sided) or lies below the horizon gives 0 and makes no queries; K = 0 gives the
+// analytic result.
 //
 // Visibility callback: bool visible(origin, unit direction, distance), all world space, the
 // distance measured to the light's plane along the direction; offset origin and distance by the
@@ -117,9 +118,11 @@ struct shadow_options {
 
 /// One term's two Monte Carlo estimates over the same samples (the balance heuristic's sums,
 /// sum_k f(w_k) [V(w_k)] / sum_j n_j p_j(w_k)): of the integrals over the light of f V (`visible`)
-/// and of f (`total`), f the term's BRDF without Fresnel and radiance; unbiased where the sample
-/// plan's density covers the part of the light where f > 0 (the light-area share covers all of it;
-/// an LTC share alone only its lobe's support), {0, 0} where no sample is drawn. Their ratio is
+/// and of f (`total`), f the term's BRDF without Fresnel and radiance (for
+/// specular_fresnel_estimates, times (1 - V.H)^5); unbiased where the sample plan's density covers
+/// the part of the light where f > 0 (the light-area share covers all of it; an LTC share alone
+/// only its lobe's support), 0 where no sample is drawn; and the analytic part's value of the
+/// integral of f (`analytic`, set whenever the light is shaded, samples or not). Their ratio is
 /// the term's visibility ratio (ratio_shading). Since the plan's counts n_j are in the
 /// denominator, their expectations do not depend on K: a renderer that denoises shadows filters
 /// each of the two over neighbouring pixels, whatever their K, and takes the ratio of the filtered
@@ -179,15 +182,18 @@ LTC_HOST_DEVICE inline polygon_light_result<T> ratio_shading(const polygon_light
 /// estimates of f / LTC's mismatch stay, filtered), and it converges to the GGX lobe with
 /// Schlick's factor instead of the LTC. Unfiltered, it is the unbiased estimate of the result
 /// (shadowed_polygon_light_result::unbiased) up to rounding. A part whose analytic estimate is
-/// not positive gives 0.
+/// not positive gives 0, and so does K = 0 (no visible sums: ratio_shading gives the analytic
+/// term instead). own / analytic is taken first: the filtered analytic value holds the pixel's
+/// own with a positive weight, so the quotient stays bounded where a tiny float analytic value
+/// would make visible / analytic overflow.
 template <typename T>
 LTC_HOST_DEVICE inline glm::vec<3, T> corrected_specular(const glm::vec<3, T>& F0, const glm::vec<3, T>& radiance,
                                                          T own_analytic, T own_analytic_fresnel,
                                                          const ratio_estimates<T>& specular,
                                                          const ratio_estimates<T>& specular_fresnel) {
-    const T s0 = specular.analytic > T(0) ? own_analytic * (specular.visible / specular.analytic) : T(0);
+    const T s0 = specular.analytic > T(0) ? specular.visible * (own_analytic / specular.analytic) : T(0);
     const T s1 = specular_fresnel.analytic > T(0)
-                     ? own_analytic_fresnel * (specular_fresnel.visible / specular_fresnel.analytic)
+                     ? specular_fresnel.visible * (own_analytic_fresnel / specular_fresnel.analytic)
                      : T(0);
     return radiance * (F0 * s0 + (glm::vec<3, T>(T(1)) - F0) * s1);
 }
