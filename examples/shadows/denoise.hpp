@@ -25,9 +25,10 @@
 // cross an edge between tiles of different materials (tiles of one material meet at corners
 // only). Measured on the default run of an earlier commit (R = 4, no LTC correction), (d) with
 // material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 against
-// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K). Cost per shaded pixel: two filters
-// of 2 (2R + 1) taps, of 4 values (specular) and 2 (diffuse) for (d), one of 2 (2R + 1) taps of
-// 3 values for (e); timed with the shading (measure.hpp).
+// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K). Cost per shaded pixel: one filter of
+// 2 (2R + 1) taps for (d), each tap's surface tested once for its 4 specular values (2 with
+// --ltc-correction off; taps of the centre's roughness) and its 2 diffuse ones (any material),
+// and one of 2 (2R + 1) taps of 3 values for (e); timed with the shading (measure.hpp).
 #pragma once
 
 #include "camera.hpp"
