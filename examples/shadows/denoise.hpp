@@ -101,7 +101,7 @@ inline bool shares(const filter_pixel& a, const filter_pixel& b, same_as match) 
     return match != same_as::roughness || a.roughness == b.roughness;
 }
 
-/// One pass of the separable filter along x (dx = 1) or y: out[i] = sum_j w_ij in[j] / sum_j w_ij
+/// One pass of the separable filter along x (along_x) or y: out[i] = sum_j w_ij in[j] / sum_j w_ij
 /// over the taps j on i's surface (the centre always is) that share what match_a asks for the
 /// first NA values, what match_b asks for the others: two filters in one pass over the taps
 /// (each value's sum and weights are those of a pass of its own, bit for bit).

@@ -61,7 +61,8 @@
 // (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
 // direct lighting only, since the light is the only emitter and the floor's inter-reflection is
 // not what the methods compute. It is the direct light of the real BRDF, so the errors of (a),
-// (a+), (b) and (d) include the LTC fit's as well as their shadows'.
+// (a+), (b) and (d) with --ltc-correction off include the LTC fit's as well as their shadows'
+// ((d) corrects it by default).
 // (a+)'s average rather than the K-sample result alone: it uses all K0 + K rays paid for, and it
 // scales the early stop's bias by K / (K0 + K). Measured in the default run (the K-sample result
 // alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4, 8.7% (8.8%) at K = 16;

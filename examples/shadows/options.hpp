@@ -41,7 +41,7 @@ inline void print_help(const char* argv0) {
         "the light and the light's area, MIS-combined; (a+) the same, stopping after K0 = min(K, 4) samples\n"
         "where they all agree (lit or in umbra), else K more; (b) the same ratio sampling the light's\n"
         "area; (c) plain Monte Carlo with MIS (one GGX-or-cosine and one light sample per\n"
-        "iteration); (d) (a) with its two estimates per term denoised by a cross-bilateral filter\n"
+        "iteration); (d) (a) with its estimates per term denoised by a cross-bilateral filter\n"
         "(Heitz et al. 2018's denoising: the shadows blurred, not the shading), by default its\n"
         "specular term also corrected for the LTC's fitting error by the same samples; (e) (c) with the\n"
         "same filter on its radiance. The reference is (c) at --reference-spp. Writes into DIR:\n"

@@ -25,7 +25,7 @@ LABELS = {
     "ratio_ltc_adaptive": "(a+) (a) with an early stop after 4 agreeing samples",
     "ratio_area": "(b) LTC + ratio, light-area samples",
     "mis": "(c) Monte Carlo, MIS",
-    "ratio_ltc_denoised": "(d) (a), its two estimates denoised",
+    "ratio_ltc_denoised": "(d) (a), its estimates denoised",
     "mis_denoised": "(e) (c), denoised by the same filter",
 }
 REGIONS = [("", "all the floor"), ("dielectric_", "the dielectric tiles"), ("gold_", "the gold tiles")]

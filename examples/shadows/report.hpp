@@ -152,10 +152,11 @@ struct seed_pair {
 
 /// The noise and bias of each pair over the floor: the RMS of the per-pixel standard deviation
 /// (measure.hpp's relative_noise), and the bias sqrt(RMSE^2 - noise^2 - reference noise^2) (the
-/// LTC fit's and the ratio estimator's; for (a+) also the early stop's, for (d) the filter's); for
-/// (a+) and (d), the shift from (a) at the same K, with the same random numbers (measure.hpp's
-/// relative_shift: the early stop's or the filter's bias, and the change of the ratio estimator's
-/// own bias with the samples it averages).
+/// LTC fit's and the ratio estimator's; for (a+) also the early stop's, for (d) the filter's, and
+/// with --ltc-correction on (d)'s without the LTC fit's); for (a+) and (d), the shift from (a) at
+/// the same K, with the same random numbers (measure.hpp's relative_shift: the early stop's or the
+/// filter's bias, and the change of the ratio estimator's own bias with the samples it averages;
+/// with --ltc-correction on also the LTC's correction).
 inline void print_noise_bias(const std::vector<seed_pair>& pairs, const std::vector<pixel_hit>& hits,
                              const std::vector<dvec3>& ref, double floor, double reference_rms_noise) {
     if (pairs.empty()) return;

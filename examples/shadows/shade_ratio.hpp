@@ -3,7 +3,8 @@
 // ltc::shade_polygon_light_shadowed (ltc/shading/shadowed_polygon_light.hpp), the ratio estimator
 // of Heitz, Hill and McGuire 2018: the analytic, unshadowed LTC shading times the ratio of two
 // Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
-// per term (specular, diffuse); (d) keeps (a)'s two estimates per term for its filter.
+// per term (specular, diffuse); (d) keeps (a)'s estimates for its filter (each term's two sums
+// and analytic value, and the specular term's for Schlick's part).
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
 //        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~8x more per sample) in

@@ -69,7 +69,7 @@
 // ltc::corrected_specular corrects the LTC's fitting error as well as the shadows (the filtered
 // estimate of the shadowed integral relative to the analytic one, per part of Hill's Fresnel
 // split; in the shadows example it cut the denoised result's mean error from 4.9% to 3.3% at
-// K = 4, and on the gold tiles, where the LTC is 9% off, from 11.4% to 4.0%). A light that
+// K = 4, and on the gold tiles, where the LTC is 8% off, from 11.4% to 4.0%). A light that
 // faces away (one-sided) or lies below the horizon gives 0 and makes no queries; K = 0 gives the
 // analytic result.
 //
@@ -141,8 +141,8 @@ struct shadowed_polygon_light_result {
     polygon_light_result<T> ratio;       ///< Heitz et al. 2018's ratio estimator
     polygon_light_result<T> unbiased;    ///< Monte Carlo of the true BRDF with the same samples
     std::size_t rays = 0;                ///< visibility queries made
-    ratio_estimates<T> specular_estimates;  ///< the specular ratio's two sums (for denoising)
-    ratio_estimates<T> diffuse_estimates;   ///< the diffuse ratio's two sums (for denoising)
+    ratio_estimates<T> specular_estimates;  ///< the specular ratio's two sums and analytic value (for denoising)
+    ratio_estimates<T> diffuse_estimates;   ///< the diffuse ratio's two sums and analytic value (for denoising)
     /// The specular sums with f (1 - V.H)^5, Schlick's (1 - F0) part, its analytic value the
     /// tables' Fresnel channel times the LTC integral (for corrected_specular).
     ratio_estimates<T> specular_fresnel_estimates;
@@ -181,7 +181,7 @@ LTC_HOST_DEVICE inline polygon_light_result<T> ratio_shading(const polygon_light
 /// analytic shading. Unlike ratio_shading, it is not exact where nothing occludes the light (the
 /// estimates of f / LTC's mismatch stay, filtered), and it converges to the GGX lobe with
 /// Schlick's factor instead of the LTC. Unfiltered, it is the unbiased estimate of the result
-/// (shadowed_polygon_light_result::unbiased) up to rounding. A part whose analytic estimate is
+/// (shadowed_polygon_light_result::unbiased) up to rounding. A part whose analytic value is
 /// not positive gives 0, and so does K = 0 (no visible sums: ratio_shading gives the analytic
 /// term instead). own / analytic is taken first: the filtered analytic value holds the pixel's
 /// own with a positive weight, so the quotient stays bounded where a tiny float analytic value
