@@ -141,10 +141,7 @@ namespace {
 
 /// The errors of the one-lobe and of the two-lobe shading (support/lobe_errors.hpp).
 lobe_errors errors_against_two_lobes(double theta, double r, const std::vector<dvec3>& L, std::uint64_t seed) {
-    return errors_against_truth(theta, r, L, seed, [](const dvec3& V, double roughness, const std::vector<dvec3>& light) {
-        return ltc::shade_polygon_light_two_lobe(dvec3(0), dvec3(0, 0, 1), V, roughness, dvec3(1), dvec3(0), dvec3(1),
-                                                 light.data(), light.size(), ltc::sidedness::one_sided);
-    });
+    return errors_against_truth(theta, r, L, seed, [](auto&&... a) { return ltc::shade_polygon_light_two_lobe(a...); });
 }
 
 }  // namespace

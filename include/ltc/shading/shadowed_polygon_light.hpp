@@ -251,7 +251,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const vec3 sampled_lobe = r.unshadowed.specular;
     // The analytic values of the integrals of f and f (1 - V.H)^5: each lobe's magnitude and
     // Fresnel channel times its integral (second_lobe_specular's bits, one integral).
-    const T ltc_integral = apply_sidedness(I.ltc, side);
+    const T ltc_integral = apply_sidedness(I.ltc, side), form_factor = apply_sidedness(I.form_factor, side);
     T analytic_f = lobe.magnitude * ltc_integral, analytic_fresnel = lobe.fresnel * ltc_integral;
     if (two) {
         const T second = apply_sidedness(integrate_polygon_light_ltc(frame, lobes[1].m_inv, P, vertices, n), side);
@@ -260,14 +260,13 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         analytic_fresnel += lobes[1].fresnel * second;
     }
     if (cosine_lobe) {
-        const T form_factor = apply_sidedness(I.form_factor, side);
         r.unshadowed.specular += radiance * brdf_scale(F0, lobes[0]) * form_factor;
         analytic_f += lobes[0].magnitude * form_factor;
         analytic_fresnel += lobes[0].fresnel * form_factor;
     }
     r.specular_estimates.analytic = analytic_f;
     r.specular_fresnel_estimates.analytic = analytic_fresnel;
-    r.diffuse_estimates.analytic = apply_sidedness(I.form_factor, side);
+    r.diffuse_estimates.analytic = form_factor;
     r.ratio = r.unshadowed;
     const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
     const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;
@@ -380,7 +379,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
 
     r.specular_estimates = spec.estimates(analytic_f);
     r.specular_fresnel_estimates = schlick.estimates(analytic_fresnel);
-    r.diffuse_estimates = diff.estimates(r.diffuse_estimates.analytic);
+    r.diffuse_estimates = diff.estimates(form_factor);
     r.ratio = ratio_shading(r.unshadowed, r.specular_estimates, r.diffuse_estimates);
     r.unbiased.specular = radiance * spec.unbiased;
     r.unbiased.diffuse = albedo * radiance * diff.visible;
