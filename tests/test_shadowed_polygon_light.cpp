@@ -9,6 +9,9 @@
 //       rounding);
 //   (b) everything occludes: 0; a light facing away (one-sided) or degenerate input: 0 and no
 //       query;
+//   (b') with the LTC and the cosine, the samples split by the LTC's part of the specular term:
+//       every query is one of the directions that the exact LTC sampler (K_s of them) and the
+//       light-area sampler (K - K_s, the cosine's part; no diffuse term) draw from the lattice;
 //   (c) a half-space occluder through the shading point (visible: d . m >= 0), whose visible part
 //       of the light is the light clipped by that plane, a convex polygon with closed forms:
 //       - the diffuse ratio estimates E(visible) / E(light) (both closed forms, eq. 11);
@@ -197,6 +200,72 @@ TEST_CASE("shadowed polygon light: unoccluded gives the analytic shading exactly
             CHECK(r.rays >= 1);
             CHECK(r.rays <= 8 * K);
         }
+}
+
+TEST_CASE("shadowed polygon light: the LTC and the cosine split their samples by the LTC's part", "[shadows]") {
+    // With analytic_lobes::cosine_lobe the LTC technique takes the share of the LTC's part of the
+    // specular term only; the cosine's part goes to the diffuse technique (here the light's area)
+    // even where there is no diffuse term (albedo 0, where a split by the whole specular term would
+    // give the area nothing). Each query's direction is matched against the directions that the two
+    // exact samplers draw from the same lattice (the LTC share without rejection).
+    const auto [view, roughness] = GENERATE(table<float, float>({{0, 1.0f}, {30, 0.9f}, {80, 1.0f}}));
+    const scene s = make_scene(view, roughness);
+    const glm::vec3 F0(0.04f), no_albedo(0.0f);
+    const glm::vec2 rotation(0.3f, 0.7f);
+    const ltc::shading_frame<float> frame = ltc::make_shading_frame(s.N, s.V);
+    const auto lobes = ltc::ggx_cosine_lobe::fetch<float>(frame.cos_theta_v, s.roughness);
+    const auto I = ltc::integrate_polygon_light<ltc::edge_policy::automatic>(frame, lobes[1].m_inv, s.P, s.light, 4);
+    const auto sum = [](const glm::vec3& c) { return double(c.x) + c.y + c.z; };
+    const double ltc_part = sum(kRadiance * ltc::brdf_scale(F0, lobes[1]) * I.ltc);
+    const double cosine_part = sum(kRadiance * ltc::brdf_scale(F0, lobes[0]) * I.form_factor);
+    REQUIRE(ltc_part > 0.0);
+    REQUIRE(cosine_part > 0.0);
+    const double share = ltc_part / (ltc_part + cosine_part);
+    for (std::size_t K : {4u, 8u, 64u}) {
+        // Far from a rounding tie: the float sums round K share the same way.
+        const double x = K * share;
+        CAPTURE(view, roughness, K, share);
+        REQUIRE(std::abs(x - std::floor(x) - 0.5) > 0.01);
+        const std::size_t ks = static_cast<std::size_t>(std::lround(x)), kd = K - ks;
+        REQUIRE(kd > 0);
+        ltc::shadow_options<float> o;
+        o.samples = K;
+        o.rotation = rotation;
+        o.lobes = ltc::analytic_lobes::cosine_lobe;
+        o.rejection_from = 2.0f;  // never: the exact sampler for the LTC share
+        std::vector<glm::vec3> queried;
+        const auto record = [&](const glm::vec3&, const glm::vec3& d, float) {
+            queried.push_back(d);
+            return true;
+        };
+        ltc::shade_polygon_light_shadowed(s.P, s.N, s.V, s.roughness, F0, no_albedo, kRadiance, s.light, 4,
+                                          ltc::sidedness::one_sided, record, o);
+        REQUIRE(queried.size() == K);
+        // The directions each technique draws.
+        std::vector<glm::vec3> expected;
+        glm::vec3 local[4];
+        for (int i = 0; i < 4; ++i) local[i] = frame.to_local(s.light[i] - s.P);
+        const ltc::ltc_polygon_sampler<float, 8> lobe(
+            ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(lobes[1].m_inv), local, 4);
+        for (std::size_t k = 0; k < ks; ++k) {
+            const glm::vec3 l = lobe.sample(ltc::detail::lattice_point(k, ks, rotation)).direction;
+            expected.push_back(frame.t1 * l.x + frame.t2 * l.y + frame.n * l.z);
+        }
+        const ltc::polygon_area_sampler<float, 8> area(s.light, 4);
+        for (std::size_t k = 0; k < kd; ++k)
+            expected.push_back(glm::normalize(area.sample(ltc::detail::lattice_point(k, kd, rotation)) - s.P));
+        // Each expected direction is one query's, to float rounding (1e-5 rad).
+        std::vector<bool> used(K, false);
+        std::size_t matched = 0;
+        for (const glm::vec3& e : expected)
+            for (std::size_t q = 0; q < K; ++q)
+                if (!used[q] && glm::length(queried[q] - e) < 1e-5f) {
+                    used[q] = true;
+                    ++matched;
+                    break;
+                }
+        CHECK(matched == K);
+    }
 }
 
 TEST_CASE("shadowed polygon light: ratio_shading from a term's two estimates", "[shadows]") {
