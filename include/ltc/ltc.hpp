@@ -34,6 +34,7 @@
 #include <ltc/core/projected_solid_angle_sampling.hpp>
 #include <ltc/core/ltc_polygon_sampling.hpp>
 #include <ltc/core/polygon_area_sampling.hpp>
+#include <ltc/core/screen_order.hpp>
 
 #include <ltc/shading/table.hpp>
 #include <ltc/shading/ggx_fetch.hpp>

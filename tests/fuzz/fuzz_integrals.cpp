@@ -183,6 +183,15 @@ void run(FuzzedDataProvider& in) {
         ltc::shadow_options<T> o;
         o.samples = in.ConsumeIntegralInRange<std::size_t>(0, 8);
         o.rotation = u;
+        if (in.ConsumeBool()) {  // a screen-ordered rotation of any pixel and seed (ltc/core/screen_order.hpp)
+            const std::uint32_t x = in.ConsumeIntegral<std::uint32_t>(), y = in.ConsumeIntegral<std::uint32_t>();
+            o.rotation = ltc::screen_rotation<T>(x, y, o.samples, in.ConsumeIntegral<std::uint64_t>());
+            if (!(o.rotation.x >= T(0) && o.rotation.x < T(1) && o.rotation.y >= T(0) && o.rotation.y < T(1))) {
+                std::fprintf(stderr, "screen rotation outside [0, 1)^2: (%g, %g)\n", static_cast<double>(o.rotation.x),
+                             static_cast<double>(o.rotation.y));
+                std::abort();
+            }
+        }
         o.sampler = in.ConsumeBool() ? ltc::shadow_sampler::ltc_polygon : ltc::shadow_sampler::light_area;
         o.diffuse = in.ConsumeBool() ? ltc::diffuse_sampler::cosine : ltc::diffuse_sampler::light_area;
         o.rejection_from = T(2) * in.ConsumeProbability<T>();
