@@ -3,7 +3,7 @@
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
 //           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]
-//           [--denoise-radius R|auto] [--ltc-correction on|off]
+//           [--denoise-radius R|auto] [--ltc-correction on|off] [--pixel-points screen|random]
 //           [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E]
 //           [--lobes 1|2|cosine] [--help]
 //
@@ -50,7 +50,17 @@
 //                    (kind, normal, plane), timed with the shading; (e)'s taps of the centre's
 //                    material, (d)'s diffuse sums shared across materials and its specular sums
 //                    between tiles of one roughness (their f carries no albedo or Fresnel term).
-//                    (d) and (e) draw (a)'s and (c)'s random numbers.
+//                    (d) draws (a)'s random numbers, (e) (c)'s (with screen-ordered points, the
+//                    default, (c) keeps its random ones and (e) takes screen-ordered ones: below).
+// Sample points (screen_order.hpp): by default the per-pixel points of every method but (c) (the
+// lattice rotation of (a), (a+)'s first call, (b) and (d): ltc::screen_rotation; each iteration's
+// light point, lobe choice and lobe point of (e)) come from a screen-space ordering of scrambled
+// Sobol points, so that neighbouring pixels' points are stratified together; each pixel's point
+// stays uniform, so no pixel's estimate or error distribution changes, but the errors that the
+// filters of (d) and (e) average over neighbours partly cancel. (c), unfiltered, keeps random
+// numbers (the ordering would only cost it time), and so does the reference. --pixel-points
+// random: independent random numbers per pixel everywhere (the example before the ordering: its
+// output byte for byte).
 // With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
 // two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
 // (ltc::analytic_lobes::cosine_lobe), and the samples of (a), (a+) and (d) follow that table's
@@ -64,8 +74,8 @@
 // (a+), (b) and (d) with --ltc-correction off include the LTC fit's as well as their shadows'
 // ((d) corrects it by default).
 // (a+)'s average rather than the K-sample result alone: it uses all K0 + K rays paid for, and it
-// scales the early stop's bias by K / (K0 + K). Measured in the default run (the K-sample result
-// alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4, 8.7% (8.8%) at K = 16;
+// scales the early stop's bias by K / (K0 + K). Measured in a default run with random rotations
+// (the K-sample result alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4, 8.7% (8.8%) at K = 16;
 // shift from (a), the early stop's bias, 5.7% (11.3%) and 7.2% (9.1%) RMS. That bias: where the
 // light is partly hidden, all K0 samples can still agree (for independent samples with
 // probability about v^K0 + (1 - v)^K0, v the visible fraction; the lattice lowers it, not to 0),
@@ -175,7 +185,7 @@ int main(int argc, char** argv) {
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr
     const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
-                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 0, false, 1, "reference");
+                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 0, false, false, 1, "reference");
     std::size_t nonfinite = ref.nonfinite;
     const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
     std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "
@@ -196,7 +206,7 @@ int main(int argc, char** argv) {
         for (int spp : *lists[k]) {
             const method_image r =
                 render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.denoise_radius,
-                              opt.ltc_correction);
+                              opt.ltc_correction, opt.screen_points);
             nonfinite += r.nonfinite;
             const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
             const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
@@ -217,7 +227,7 @@ int main(int argc, char** argv) {
     for (seed_pair& p : pairs) {
         const method_image second = render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp,
                                                   mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.denoise_radius,
-                                                  opt.ltc_correction, 1);
+                                                  opt.ltc_correction, opt.screen_points, 1);
         p.second = second.img;
         nonfinite += second.nonfinite;
     }

@@ -46,18 +46,20 @@ struct method_image {
 
 /// Every pixel by `which` at `spp`, seeded by (seed, which, spp, pixel), the ratio methods' analytic
 /// part with `lobes`, (d)'s and (e)'s filter of radius denoise_radius (-1: auto_radius(spp);
-/// denoise.hpp), (d)'s specular term corrected for the LTC's error with ltc_correction; timed with the
+/// denoise.hpp), (d)'s specular term corrected for the LTC's error with ltc_correction, the pixels'
+/// sample points screen-ordered with screen_points (screen_order.hpp); timed with the
 /// filter (file comment) over up to max_runs runs (1: the reference, the second seeds). With a
 /// label: a progress bar on stderr.
 inline method_image render_method(const scene& s, const tracer& tr, const std::vector<pixel_hit>& hits, int W, int H,
                                   unsigned threads, method which, int spp, std::uint64_t seed, ltc::analytic_lobes lobes,
-                                  int denoise_radius, bool ltc_correction, int max_runs = 5,
+                                  int denoise_radius, bool ltc_correction, bool screen_points, int max_runs = 5,
                                   const char* label = nullptr) {
     const std::size_t count = static_cast<std::size_t>(W) * H;
     // (a+) draws (a)'s random numbers (common random numbers: where K <= K0 its first call is (a)'s
     // call), so that the difference of the two measures its early stop with little noise.
     // (d) and (e) filter (a)'s and (c)'s images: the same random numbers, so that the difference
-    // shows the filter's effect alone.
+    // shows the filter's effect alone ((e) with --pixel-points random: by default its points are
+    // screen-ordered and (c)'s are not, since without a filter the ordering only costs time).
     const method seeded_as = which == method::ratio_ltc_adaptive || which == method::ratio_ltc_denoised ? method::ratio_ltc
                              : which == method::mis_denoised                                          ? method::mis
                                                                                                       : which;
@@ -76,7 +78,8 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
             [&](int y) {
                 for (int x = 0; x < W; ++x) {
                     const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes);
+                    const pixel_points points{screen_points && which != method::mis, x, y, mix_seed(run, 0x5C2EE7u)};
+                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes, points);
                 }
             },
             label);

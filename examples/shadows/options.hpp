@@ -24,6 +24,7 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
     int denoise_radius = -1;  // (d) and (e): the filter's half-width in pixels, -1: auto_radius(K) (denoise.hpp)
     bool ltc_correction = true;  // (d): the specular term's LTC error corrected too (ltc::corrected_specular)
+    bool screen_points = true;   // every method but (c) and the reference: screen-ordered points (screen_order.hpp)
     int reference_spp = 4096;  // (c)'s iterations for the reference
     ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b), (d): the analytic part's table
 };
@@ -32,7 +33,8 @@ inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]\n"
         "          [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]\n"
-        "          [--denoise-radius R|auto] [--ltc-correction on|off] [--reference-spp N] [--threads K]\n"
+        "          [--denoise-radius R|auto] [--ltc-correction on|off] [--pixel-points screen|random]\n"
+        "          [--reference-spp N] [--threads K]\n"
         "          [--out DIR] [--seed S] [--exposure E] [--lobes 1|2|cosine] [--help]\n"
         "\n"
         "Renders a tiled GGX floor (dielectric and gold tiles) and two grey occluders lit by one quad\n"
@@ -73,6 +75,13 @@ inline void print_help(const char* argv0) {
         "                      which corrects the LTC's fitting error too (ltc::corrected_specular;\n"
         "                      default on), or off: the analytic term times the ratio of the\n"
         "                      filtered sums (ltc::ratio_shading, Heitz et al. 2018)\n"
+        "  --pixel-points screen|random\n"
+        "                      each pixel's sample points (the lattice rotation of (a), (a+)'s first\n"
+        "                      call, (b) and (d); each iteration's points of (e)): by default\n"
+        "                      screen-ordered, the neighbours' points stratified together (scrambled\n"
+        "                      Sobol points in a shuffled Morton order of the pixels:\n"
+        "                      ltc/core/screen_order.hpp), or independent random numbers per pixel;\n"
+        "                      (c)'s and the reference's are random\n"
         "  --reference-spp N   iterations of the reference (default 4096)\n"
         "  --lobes 1|2|cosine  the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
         "                      (default), the two-lobe table (ltc::analytic_lobes::two) or the table of\n"
@@ -133,6 +142,12 @@ inline int parse_args(int argc, char** argv, options& o) {
             const std::string t(v.text);
             if (t != "on" && t != "off") return option_status::bad;
             o.ltc_correction = t == "on";
+            return option_status::taken;
+        }
+        if (a == "--pixel-points") {
+            const std::string t(v.text);
+            if (t != "screen" && t != "random") return option_status::bad;
+            o.screen_points = t == "screen";
             return option_status::taken;
         }
         if (a == "--denoise-radius") {

@@ -8,13 +8,16 @@
 // correlated masking) times Schlick's F0 + (1 - F0)(1 - V.H)^5, plus Lambert albedo / pi. The
 // BRDF technique picks GGX's visible normals or, with probability 1/2 where albedo > 0, the
 // cosine (GGX alone would leave the rough diffuse term to the light samples only). Independent
-// uniform random numbers (SplitMix64), seeded per pixel.
+// uniform random numbers (SplitMix64), seeded per pixel, or with screen-ordered points
+// (screen_order.hpp) each iteration's light point, lobe choice and lobe point from their own
+// streams of them.
 #pragma once
 
 #include "camera.hpp"
 #include "common/colour.hpp"
 #include "common/random.hpp"
 #include "scene.hpp"
+#include "screen_order.hpp"
 #include "tracer.hpp"
 
 #include <ltc/fitting/brdf/ggx.hpp>
@@ -50,7 +53,7 @@ struct shaded_pixel {
 
 /// Radiance towards the camera at one pixel by `iterations` MIS iterations (file comment).
 inline shaded_pixel shade_mis(const scene& s, const tracer& tr, const pixel_hit& h, int iterations,
-                              std::uint64_t seed) {
+                              std::uint64_t seed, const pixel_points& points = {}) {
     using ggx = ltc::brdf::ggx<float>;
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
@@ -85,7 +88,11 @@ inline shaded_pixel shade_mis(const scene& s, const tracer& tr, const pixel_hit&
     for (int i = 0; i < iterations; ++i) {
         vec3 value(0.0f);
         // Light sample: a uniform point on the quad.
-        const float u = uniform_float(rng), v = uniform_float(rng);
+        float u = uniform_float(rng), v = uniform_float(rng);
+        if (points.screen) {  // iteration i's three streams: the light's point, the lobe's choice, the lobe's point
+            const glm::vec2 p = points.at(3 * static_cast<std::uint64_t>(i) + 1);
+            u = p.x, v = p.y;
+        }
         const vec3 to_light = q0 + u * e1 + v * e3 - O;
         const float distance = glm::length(to_light);
         const vec3 w = to_light / distance;
@@ -97,7 +104,11 @@ inline shaded_pixel shade_mis(const scene& s, const tracer& tr, const pixel_hit&
                 value += s.light_radiance * f / (pl + brdf_pdf(frame.to_local(w)));
         }
         // BRDF sample.
-        const float pick = uniform_float(rng), a = uniform_float(rng), b = uniform_float(rng);
+        float pick = uniform_float(rng), a = uniform_float(rng), b = uniform_float(rng);
+        if (points.screen) {
+            const glm::vec2 p = points.at(3 * static_cast<std::uint64_t>(i) + 3);
+            pick = points.at(3 * static_cast<std::uint64_t>(i) + 2).x, a = p.x, b = p.y;
+        }
         vec3 L;
         if (pick < p_ggx) {
             L = ggx::sample(V, glm::vec2(a, b), alpha);

@@ -15,13 +15,16 @@
 //        more with another rotation, and the two ratios averaged with weights K0 and K: up to
 //        K0 + K rays (main.cpp's file comment: why the average, and the early stop's bias).
 //   (b)  K points uniform over the light's area, shared by both terms: up to K rays.
-// All on a rank-1 lattice shifted by a per-pixel random rotation (Cranley-Patterson), so that the
-// lattice's structured error becomes noise. Visibility: Embree shadow rays
+// All on a rank-1 lattice shifted by a per-pixel rotation (Cranley-Patterson), so that the
+// lattice's structured error becomes noise: by default screen-ordered (ltc::screen_rotation:
+// neighbouring pixels' lattices stratified together; screen_order.hpp), with --pixel-points random
+// independent per pixel. Visibility: Embree shadow rays
 // (tracer::light_visible, the offsets of tracer.hpp).
 #pragma once
 
 #include "camera.hpp"
 #include "scene.hpp"
+#include "screen_order.hpp"
 #include "shade_mis.hpp"  // shaded_pixel, uniform_float
 #include "tracer.hpp"
 
@@ -36,7 +39,8 @@
 
 namespace shadows {
 
-// The values seed the renders; (d) and (e) draw (a)'s and (c)'s random numbers (measure.hpp).
+// The values seed the renders; (d) and (e) draw (a)'s and (c)'s random numbers (measure.hpp; (c)'s
+// points are never screen-ordered).
 enum class method { ratio_ltc, ratio_area, mis, ratio_ltc_adaptive, ratio_ltc_denoised, mis_denoised };
 
 /// (d) and (e): a method whose pixels are filtered after shading (denoise.hpp).
@@ -67,15 +71,19 @@ inline const char* method_label(method m) {
 
 constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
 
-/// One call of the library at the pixel: K samples by `sampler`, a random lattice rotation.
+/// One call of the library at the pixel: K samples by `sampler`, the lattice rotated at random or,
+/// given screen-ordered points, by ltc::screen_rotation (the neighbours' lattices stratified
+/// together).
 inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, const tracer& tr, const pixel_hit& h,
                                                                ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
-                                                               ltc::ground_truth::splitmix64& rng) {
+                                                               ltc::ground_truth::splitmix64& rng,
+                                                               const pixel_points* points = nullptr) {
     const material& m = s.materials[static_cast<std::size_t>(h.material)];
     ltc::shadow_options<float> options;
     options.samples = static_cast<std::size_t>(K);
     const float rx = uniform_float(rng), ry = uniform_float(rng);
     options.rotation = glm::vec2(rx, ry);
+    if (points != nullptr && points->screen) options.rotation = points->rotation(options.samples);
     options.sampler = sampler;
     options.lobes = lobes;
     const vec3 N = h.n;
@@ -95,14 +103,14 @@ inline bool agreed(const glm::vec3& ratio, const glm::vec3& unshadowed) {
 
 /// Radiance towards the camera at one pixel by (a), (a+) or (b) with K = spp samples.
 inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                                std::uint64_t seed, ltc::analytic_lobes lobes) {
+                                std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points) {
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
     if (!h.shaded() || spp <= 0) return out;
     ltc::ground_truth::splitmix64 rng(seed);
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
-    const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, lobes, rng);
+    const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
@@ -125,9 +133,10 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
 /// One pixel by any method, before (d)'s and (e)'s filter: K = spp samples for (a), (a+), (b) and
 /// (d), spp MIS iterations (one BRDF and one light sample each) for (c) and (e).
 inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                          std::uint64_t seed, ltc::analytic_lobes lobes) {
-    if (which == method::mis || which == method::mis_denoised) return shade_mis(s, tr, h, spp, seed);
-    return shade_ratio(s, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed, lobes);
+                          std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points) {
+    if (which == method::mis || which == method::mis_denoised) return shade_mis(s, tr, h, spp, seed, points);
+    return shade_ratio(s, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed, lobes,
+                       points);
 }
 
 }  // namespace shadows
