@@ -1,14 +1,15 @@
-// Screen-ordered sample points (ltc/core/screen_order.hpp) and the lattice rotations built from
-// them (ltc::screen_rotation, ltc/shading/shadowed_polygon_light.hpp):
+// Screen-ordered sample points (ltc/core/screen_order.hpp) and the lattices shifted by them
+// (shadow_options::stratified_rotation, ltc/shading/shadowed_polygon_light.hpp; the sums'
+// expectations under it: tests/test_shadowed_polygon_light.cpp):
 //   (a) every aligned 2^k x 2^k block of pixels holds a (0, 2k, 2)-net in base 2: one point in
 //       each elementary interval of area 4^-k, of every shape (k = 1..4; exact integer checks);
 //   (b) each pixel's point is uniform over the seeds (chi-square, 8 x 8 cells);
 //   (c) the scrambling's parts: Morton codes interleave the bits; Owen's scrambling maps every
 //       aligned dyadic interval onto one of the same length (the top m bits of the result depend
 //       on the top m bits of the input only) and is a bijection;
-//   (d) the rotations of a block of pixels stratify the K-point lattices together: the block's
-//       K 4^k first coordinates are one per interval of width 1 / (K 4^k), and each pixel's second
-//       coordinates are its point's.
+//   (d) the per-period shifts of a block of pixels stratify their n-point lattices together, for
+//       any n: the block's n 4^k first coordinates are one per interval of width 1 / (n 4^k); the
+//       second coordinates are the unshifted lattice's plus the point's.
 #include "support/chi_square.hpp"
 
 #include <ltc/core/screen_order.hpp>
@@ -120,29 +121,32 @@ TEST_CASE("screen order: Morton codes and Owen's scrambling", "[screen_order]") 
     CHECK(images.size() == (1u << 16));
 }
 
-TEST_CASE("screen order: lattice rotations stratify a block's lattices together", "[screen_order]") {
+TEST_CASE("screen order: per-period lattice shifts stratify a block's lattices together", "[screen_order]") {
+    // shadow_options::stratified_rotation: a lattice of n points shifted by p.x / n along its first
+    // coordinate, p a pixel's screen-ordered point. Over an aligned 2^k x 2^k block, for every n
+    // (each technique's own count), the n 4^k first coordinates are one per interval of width
+    // 1 / (n 4^k), binned from the points the library computes (float; the cells' edges are
+    // multiples of 2^-10 at most, far from the points' rounding, about 2^-21); the second
+    // coordinates are k / phi + p.y mod 1, unchanged.
     const std::uint64_t seed = 0x0123456789abcdefull;
-    for (std::size_t K : {1u, 3u, 4u, 8u}) {
+    for (std::size_t n : {1u, 3u, 4u, 7u, 8u}) {
         for (int k = 1; k <= 3; ++k) {
             const int side = 1 << k;
-            const std::size_t cells = K * std::size_t(side * side);
+            const std::size_t cells = n * std::size_t(side * side);
             std::set<std::size_t> used;
             for (int y = 0; y < side; ++y)
                 for (int x = 0; x < side; ++x) {
-                    const glm::vec2 r = ltc::screen_rotation<float>(std::uint32_t(x + 8), std::uint32_t(y), K, seed);
                     const glm::vec2 p = ltc::screen_point<float>(std::uint32_t(x + 8), std::uint32_t(y), seed);
-                    CHECK(r.y == p.y);
-                    for (std::size_t j = 0; j < K; ++j) {
-                        const glm::vec2 u = ltc::detail::lattice_point(j, K, r);
-                        // u.x = (j + 1/2 + p.x) / K mod 1 (to float rounding), whose cell of
-                        // width 1 / (K 4^k) is j 4^k + 4^k / 2 + (p.x's top 2k bits), mod K 4^k.
-                        const double ux = (double(j) + 0.5 + double(p.x)) / double(K);
-                        CHECK(std::abs(double(u.x) - (ux - std::floor(ux))) < 1e-6);
-                        const std::size_t q = std::size_t(side * side);
-                        used.insert((j * q + q / 2 + digits(p.x, 2 * k)) % cells);
+                    for (std::size_t j = 0; j < n; ++j) {
+                        const glm::vec2 u = ltc::detail::lattice_point(j, n, p, true);
+                        const glm::vec2 plain = ltc::detail::lattice_point(j, n, glm::vec2(0.0f, p.y));
+                        CHECK(u.y == plain.y);
+                        CHECK(u.x >= 0.0f);
+                        CHECK(u.x < 1.0f);
+                        used.insert(std::size_t(double(u.x) * double(cells)));
                     }
                 }
-            CAPTURE(K, k);
+            CAPTURE(n, k);
             CHECK(used.size() == cells);
         }
     }

@@ -22,9 +22,10 @@
 //         and E(light), the GGX lobe's integrals over the visible part and the light (ground
 //         truth), and the sums of Schlick's part those of f (1 - V.H)^5 (ground truth of that
 //         product);
-//       for five sample plans (plan_options: the LTC share by rejection or exactly, the diffuse
+//       for seven sample plans (plan_options: the LTC share by rejection or exactly, the diffuse
 //       share from the area or the exact cosine sampler, area alone, the LTC of the table of an
-//       LTC and the cosine). Tolerances: 4 standard errors of the mean over R independent
+//       LTC and the cosine, and two of them with each technique's lattice shifted one period,
+//       stratified_rotation). Tolerances: 4 standard errors of the mean over R independent
 //       Cranley-Patterson shifts (sigma from the spread of the R results) and of the ground
 //       truth. The ratio estimator's bias is O(1/K) (delta method: about CV^2 / K relative, CV
 //       the coefficient of variation of f / p), against a standard error of CV / sqrt(K R): the
@@ -109,8 +110,9 @@ std::vector<glm::dvec3> clip_half_space(const std::vector<glm::dvec3>& p, const 
 /// 2 the diffuse share from the exact cosine sampler (and the LTC share always by rejection),
 /// 3 light-area samples only, 4 the default plan with the LTC of the table of an LTC and the cosine
 /// (analytic_lobes::cosine_lobe: another density and split; in the unoccluded test, which sets
-/// the lobes itself, plan 4 is plan 0 again).
-constexpr int kPlans = 5;
+/// the lobes itself, plan 4 is plan 0 again), 5 and 6 plans 0 and 2 with stratified_rotation (each
+/// technique's lattice shifted one period: K_s, K_d and the rejection's draws all differ from K).
+constexpr int kPlans = 7;
 
 ltc::shadow_options<float> plan_options(int plan) {
     ltc::shadow_options<float> o;
@@ -118,6 +120,8 @@ ltc::shadow_options<float> plan_options(int plan) {
     if (plan == 1) o.rejection_from = 2.0f;
     if (plan == 2) o.diffuse = ltc::diffuse_sampler::cosine, o.rejection_from = 0.0f;
     if (plan == 4) o.lobes = ltc::analytic_lobes::cosine_lobe;
+    if (plan == 5) o = plan_options(0), o.stratified_rotation = true;
+    if (plan == 6) o = plan_options(2), o.stratified_rotation = true;
     return o;
 }
 
@@ -402,6 +406,28 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
             // Exact samplers: the diffuse ratio's spread is the lattice's and the lobes' mismatch,
             // below a binomial's sqrt(p (1 - p) / K) ~ 0.016.
             CHECK(diffuse.error * std::sqrt(double(R)) < 0.016);
+        }
+        if (o.stratified_rotation) {
+            // Few samples, where a shift that missed part of a technique's period would show (a
+            // shift by rotation.x / K on a lattice of K_s != K points: -4% at K = 8): the sums
+            // over 4096 uniform shifts at K = 3 and 8 (K_s, K_d and the draws all differ from K).
+            for (std::size_t K : {3u, 8u}) {
+                o.samples = K;
+                const auto few = over_shifts<6>(4096, [&](const glm::vec2& shift) {
+                    o.rotation = shift;
+                    const auto r = shade(s, glm::vec3(1.0f), visible, o);
+                    return std::array<double, 6>{r.diffuse_estimates.visible,          r.diffuse_estimates.total,
+                                                 r.specular_estimates.visible,         r.specular_estimates.total,
+                                                 r.specular_fresnel_estimates.visible, r.specular_fresnel_estimates.total};
+                });
+                CAPTURE(K);
+                CHECK(within(few[0], e_vis, 0.0));
+                CHECK(within(few[1], e_all, 0.0));
+                CHECK(within(few[2], t_vis.mean, t_vis.standard_error));
+                CHECK(within(few[3], t_all.mean, t_all.standard_error));
+                CHECK(within(few[4], t_vis_f.mean, t_vis_f.standard_error));
+                CHECK(within(few[5], t_all_f.mean, t_all_f.standard_error));
+            }
         }
     }
 }

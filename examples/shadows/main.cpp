@@ -53,11 +53,11 @@
 //                    (d) draws (a)'s random numbers, (e) (c)'s (with screen-ordered points, the
 //                    default, (c) keeps its random ones and (e) takes screen-ordered ones: below).
 // Sample points (screen_order.hpp): by default the per-pixel points of every method but (c) (the
-// lattice rotation of (a), (a+)'s first call, (b) and (d): ltc::screen_rotation; each iteration's
-// light point, lobe choice and lobe point of (e)) come from a screen-space ordering of scrambled
-// Sobol points, so that neighbouring pixels' points are stratified together; each pixel's point
-// stays uniform, so no pixel's estimate or error distribution changes, but the errors that the
-// filters of (d) and (e) average over neighbours partly cancel. (c), unfiltered, keeps random
+// lattice rotation of (a), (a+)'s first call, (b) and (d), with shadow_options::stratified_rotation;
+// each iteration's light point, lobe choice and lobe point of (e)) come from a screen-space
+// ordering of scrambled Sobol points, so that neighbouring pixels' points are stratified together;
+// each pixel's point stays uniform, so that every Monte Carlo sum keeps its expectation, and the
+// errors that the filters of (d) and (e) average over neighbours partly cancel. (c), unfiltered, keeps random
 // numbers (the ordering would only cost it time), and so does the reference. --pixel-points
 // random: independent random numbers per pixel everywhere (the example before the ordering: its
 // output byte for byte).

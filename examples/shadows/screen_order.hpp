@@ -2,17 +2,15 @@
 // per pixel, or by default screen-ordered points (ltc/core/screen_order.hpp: scrambled Sobol
 // points in a shuffled Morton order of the pixels), so that neighbouring pixels' points are
 // stratified together and the errors that (d)'s and (e)'s filter averages over neighbours partly
-// cancel. Each pixel's point stays uniform: no pixel's estimate or error distribution changes.
+// cancel. Each pixel's point stays uniform, so that every Monte Carlo sum keeps its expectation.
 #pragma once
 
 #include "common/random.hpp"
 
 #include <ltc/core/screen_order.hpp>
-#include <ltc/shading/shadowed_polygon_light.hpp>
 
 #include <glm/glm.hpp>
 
-#include <cstddef>
 #include <cstdint>
 
 namespace shadows {
@@ -27,10 +25,6 @@ struct pixel_points {
     std::uint64_t seed(std::uint64_t stream) const { return ltc_examples::mix_seed(run, stream); }
     glm::vec2 at(std::uint64_t stream) const {
         return ltc::screen_point<float>(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), seed(stream));
-    }
-    /// The lattice rotation of stream 0 for K samples (ltc::screen_rotation).
-    glm::vec2 rotation(std::size_t K) const {
-        return ltc::screen_rotation<float>(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), K, seed(0));
     }
 };
 

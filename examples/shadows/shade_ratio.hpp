@@ -16,9 +16,9 @@
 //        K0 + K rays (main.cpp's file comment: why the average, and the early stop's bias).
 //   (b)  K points uniform over the light's area, shared by both terms: up to K rays.
 // All on a rank-1 lattice shifted by a per-pixel rotation (Cranley-Patterson), so that the
-// lattice's structured error becomes noise: by default screen-ordered (ltc::screen_rotation:
-// neighbouring pixels' lattices stratified together; screen_order.hpp), with --pixel-points random
-// independent per pixel. Visibility: Embree shadow rays
+// lattice's structured error becomes noise: by default screen-ordered (ltc::screen_point with
+// shadow_options::stratified_rotation: neighbouring pixels' lattices stratified together;
+// screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel. Visibility: Embree shadow rays
 // (tracer::light_visible, the offsets of tracer.hpp).
 #pragma once
 
@@ -72,8 +72,8 @@ inline const char* method_label(method m) {
 constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
 
 /// One call of the library at the pixel: K samples by `sampler`, the lattice rotated at random or,
-/// given screen-ordered points, by ltc::screen_rotation (the neighbours' lattices stratified
-/// together).
+/// given screen-ordered points, by the pixel's point of stream 0 with stratified_rotation (the
+/// neighbours' lattices stratified together: ltc/shading/shadowed_polygon_light.hpp).
 inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, const tracer& tr, const pixel_hit& h,
                                                                ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
                                                                ltc::ground_truth::splitmix64& rng,
@@ -83,7 +83,10 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
     options.samples = static_cast<std::size_t>(K);
     const float rx = uniform_float(rng), ry = uniform_float(rng);
     options.rotation = glm::vec2(rx, ry);
-    if (points != nullptr && points->screen) options.rotation = points->rotation(options.samples);
+    if (points != nullptr && points->screen) {
+        options.rotation = points->at(0);
+        options.stratified_rotation = true;
+    }
     options.sampler = sampler;
     options.lobes = lobes;
     const vec3 N = h.n;

@@ -42,13 +42,11 @@ __global__ void two_lobe_integrals(const glm::vec3* quads, const glm::mat3* m_in
              ltc::integrate_polygon_light_ltc(frame, m_inv[2 * i + 1], glm::vec3(0.0f), quads + 4 * i, 4);
 }
 
-// Screen-ordered sample points (ltc/core/screen_order.hpp): each pixel's point, and its lattice
-// rotation for K samples (ltc::screen_rotation).
-__global__ void screen_points(glm::vec4* out, int width, int count, unsigned long long seed, unsigned samples) {
+// Screen-ordered sample points (ltc/core/screen_order.hpp): each pixel's point, and the first
+// point of a lattice of n shifted by it one period (shadow_options::stratified_rotation).
+__global__ void screen_points(glm::vec4* out, int width, int count, unsigned long long seed, unsigned n) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= count) return;
-    const unsigned x = unsigned(i % width), y = unsigned(i / width);
-    const glm::vec2 p = ltc::screen_point<float>(x, y, seed);
-    const glm::vec2 r = ltc::screen_rotation<float>(x, y, samples, seed);
-    out[i] = glm::vec4(p, r);
+    const glm::vec2 p = ltc::screen_point<float>(unsigned(i % width), unsigned(i / width), seed);
+    out[i] = glm::vec4(p, ltc::detail::lattice_point(0, n, p, true));
 }

@@ -185,7 +185,8 @@ void run(FuzzedDataProvider& in) {
         o.rotation = u;
         if (in.ConsumeBool()) {  // a screen-ordered rotation of any pixel and seed (ltc/core/screen_order.hpp)
             const std::uint32_t x = in.ConsumeIntegral<std::uint32_t>(), y = in.ConsumeIntegral<std::uint32_t>();
-            o.rotation = ltc::screen_rotation<T>(x, y, o.samples, in.ConsumeIntegral<std::uint64_t>());
+            o.rotation = ltc::screen_point<T>(x, y, in.ConsumeIntegral<std::uint64_t>());
+            o.stratified_rotation = true;
             if (!(o.rotation.x >= T(0) && o.rotation.x < T(1) && o.rotation.y >= T(0) && o.rotation.y < T(1))) {
                 std::fprintf(stderr, "screen rotation outside [0, 1)^2: (%g, %g)\n", static_cast<double>(o.rotation.x),
                              static_cast<double>(o.rotation.y));

@@ -8,10 +8,11 @@
 // index. An aligned 2^k x 2^k block of pixels has 4^k consecutive Morton codes, which the shuffle
 // maps to another 4^k consecutive, aligned indices: a (0, 2k, 2)-net, which the scrambling keeps
 // (one point in each of the block's 4^k elementary intervals [a 2^-i, (a + 1) 2^-i) x
-// [b 2^-j, (b + 1) 2^-j), i + j = 2k). Each pixel's point is uniform over [0, 1)^2 over the seeds,
-// so an estimate drawn from it keeps its expectation; a filter that averages neighbouring pixels'
-// estimates then averages stratified samples, whose errors partly cancel (white-noise points:
-// they add). Without such a filter the ordering changes no pixel's error distribution.
+// [b 2^-j, (b + 1) 2^-j), i + j = 2k; in float, whose points keep 24 bits, for k <= 12). Each
+// pixel's point is uniform over [0, 1)^2 over the seeds, so a Monte Carlo sum drawn from it keeps
+// its expectation; a filter that averages neighbouring pixels' estimates then averages stratified
+// samples, whose errors partly cancel (white-noise points: they add). Used as the shadowed
+// shading's lattice rotation: shadow_options::stratified_rotation.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -67,8 +68,10 @@ LTC_HOST_DEVICE LTC_INLINE std::uint32_t morton_code(std::uint32_t x, std::uint3
 /// A 32-bit binary fraction as T in [0, 1): float keeps the top 24 bits (rounding more could give 1).
 template <typename T>
 LTC_HOST_DEVICE LTC_INLINE T unit_fraction(std::uint32_t d) {
-    if (std::is_same<T, float>::value) return T(d >> 8) * T(1.0 / 16777216.0);
-    return T(d) * T(1.0 / 4294967296.0);
+    if constexpr (std::is_same<T, float>::value)
+        return T(d >> 8) * T(1.0 / 16777216.0);
+    else
+        return T(d) * T(1.0 / 4294967296.0);
 }
 
 /// Sobol's second dimension at `index`, its binary digits reversed (bit j: the digit of 2^-(j+1)):
