@@ -125,9 +125,9 @@ TEST_CASE("screen order: per-period lattice shifts stratify a block's lattices t
     // shadow_options::stratified_rotation: a lattice of n points shifted by p.x / n along its first
     // coordinate, p a pixel's screen-ordered point. Over an aligned 2^k x 2^k block, for every n
     // (each technique's own count), the n 4^k first coordinates are one per interval of width
-    // 1 / (n 4^k), binned from the points the library computes (float; the cells' edges are
-    // multiples of 2^-10 at most, far from the points' rounding, about 2^-21); the second
-    // coordinates are k / phi + p.y mod 1, unchanged.
+    // 1 / (n 4^k), binned from the points the library computes (float, rounded by about 2^-21:
+    // a point could cross a cell's edge only if p.x lay that close to one, which these fixed
+    // seeds' points do not); the second coordinates are k / phi + p.y mod 1, unchanged.
     const std::uint64_t seed = 0x0123456789abcdefull;
     for (std::size_t n : {1u, 3u, 4u, 7u, 8u}) {
         for (int k = 1; k <= 3; ++k) {

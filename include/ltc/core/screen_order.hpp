@@ -9,8 +9,9 @@
 // maps to another 4^k consecutive, aligned indices: a (0, 2k, 2)-net, which the scrambling keeps
 // (one point in each of the block's 4^k elementary intervals [a 2^-i, (a + 1) 2^-i) x
 // [b 2^-j, (b + 1) 2^-j), i + j = 2k; in float, whose points keep 24 bits, for k <= 12). Each
-// pixel's point is uniform over [0, 1)^2 over the seeds, so a Monte Carlo sum drawn from it keeps
-// its expectation; a filter that averages neighbouring pixels' estimates then averages stratified
+// pixel's point is uniform over [0, 1)^2 over the seeds, so a Monte Carlo sum that takes it as
+// its uniform shift (all of it, not a part: a shift that covers part of a lattice's period is
+// biased) keeps its expectation; a filter that averages neighbouring pixels' estimates then averages stratified
 // samples, whose errors partly cancel (white-noise points: they add). Used as the shadowed
 // shading's lattice rotation: shadow_options::stratified_rotation.
 #pragma once

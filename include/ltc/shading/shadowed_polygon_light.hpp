@@ -39,16 +39,17 @@
 //                baseline.
 // f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/fitting/brdf/ggx.hpp,
 // alpha = roughness^2) for the specular term, cos / pi for the diffuse one; the ratio corrects
-// the analytic result for visibility only. The directions are a rank-1 lattice, (k + 1/2) / K
-// and k / phi (the golden ratio) modulo 1, per sampler, shifted by options.rotation
+// the analytic result for visibility only. The directions are a rank-1 lattice, (k + 1/2) / n
+// and k / phi (the golden ratio) modulo 1, n the sampler's own count, shifted by options.rotation
 // (Cranley-Patterson rotation: pass a random shift per pixel to turn the structured error into
 // noise). Where a renderer filters the estimates over neighbouring pixels, the shifts can instead
 // be stratified across pixels: options.rotation = ltc::screen_point(x, y, image_seed) with
 // options.stratified_rotation, which shifts each technique's lattice of n points by rotation.x / n,
 // one period of its first coordinate, so that the n 4^k first coordinates of an aligned
-// 2^k x 2^k block of pixels fall one per interval of width 1 / (n 4^k) (a shift by rotation.x
-// itself stratifies nothing but the points' common offset; a shift by rotation.x / K, K the total
-// count, would cover only part of a period for a technique of n != K points and bias its sums).
+// 2^k x 2^k block of pixels with the same n fall one per interval of width 1 / (n 4^k) (a shift
+// by rotation.x itself stratifies nothing but the points' common offset; a shift by
+// rotation.x / K, K the total count, would cover only part of the periods of a technique whose n
+// is not a multiple of K, and bias its sums).
 // Each sum keeps its expectation over a uniform rotation (the n intervals of width 1 / n that
 // the first coordinates sweep tile [0, 1)); the ratio, a nonlinear function of them, is not
 // distributed exactly as with random shifts. In the shadows example the denoised result's mean
@@ -121,12 +122,12 @@ enum class analytic_lobes { one, two, cosine_lobe };
 template <typename T>
 struct shadow_options {
     std::size_t samples = 4;        ///< K: directions (visibility queries) per call
-    glm::vec<2, T> rotation{T(0)};  ///< Cranley-Patterson shift in [0, 1)^2, per pixel: random, or ltc::screen_point
+    glm::vec<2, T> rotation{T(0)};  ///< Cranley-Patterson shift in [0, 1)^2, per pixel: random, or ltc::screen_point with stratified_rotation
     /// Each technique's lattice of n points shifted by rotation.x / n along its first coordinate,
     /// which repeats every 1 / n, instead of by rotation.x: for rotations stratified across pixels
-    /// (ltc::screen_point of ltc/core/screen_order.hpp), so that a block of pixels' lattices are
-    /// stratified together whatever n (file comment). Either way each sum keeps its expectation
-    /// for a uniform rotation.
+    /// (ltc::screen_point of ltc/core/screen_order.hpp), so that a block of pixels' lattices of one
+    /// n are stratified together (file comment). Either way each sum keeps its expectation for a
+    /// uniform rotation.
     bool stratified_rotation = false;
     shadow_sampler sampler = shadow_sampler::ltc_polygon;
     diffuse_sampler diffuse = diffuse_sampler::light_area;
