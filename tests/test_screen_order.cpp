@@ -11,6 +11,7 @@
 //       any n: the block's n 4^k first coordinates are one per interval of width 1 / (n 4^k); the
 //       second coordinates are the unshifted lattice's plus the point's.
 #include "support/chi_square.hpp"
+#include "support/rng.hpp"
 
 #include <ltc/core/screen_order.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
@@ -65,18 +66,13 @@ TEMPLATE_TEST_CASE("screen order: aligned blocks of pixels hold (0, 2k, 2)-nets"
 }
 
 TEST_CASE("screen order: each pixel's point is uniform over the seeds", "[screen_order]") {
-    // 6400 seeds (a splitmix-style sequence of words), 64 cells: X^2 against the 1e-4 critical value.
+    // 6400 seeds (SplitMix64 words), 64 cells: X^2 against the 1e-4 critical value.
     for (const auto& pixel : {std::pair<std::uint32_t, std::uint32_t>{0, 0}, {5, 3}, {1000, 77}}) {
         const long n = 6400;
         std::vector<long> counts(64, 0);
-        std::uint64_t s = 0x243f6a8885a308d3ull;
+        ltc_test::rng seeds(0x243f6a8885a308d3ull);
         for (long i = 0; i < n; ++i) {
-            s += 0x9e3779b97f4a7c15ull;
-            std::uint64_t z = s;
-            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-            z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-            z ^= z >> 31;
-            const glm::vec2 p = ltc::screen_point<float>(pixel.first, pixel.second, z);
+            const glm::vec2 p = ltc::screen_point<float>(pixel.first, pixel.second, seeds.next_u64());
             ++counts[std::size_t(digits(p.x, 3) * 8 + digits(p.y, 3))];
         }
         const ltc_test::chi_square r = ltc_test::chi_square_test(std::vector<double>(64, 1.0 / 64), counts, n);

@@ -57,10 +57,10 @@
 // each iteration's light point, lobe choice and lobe point of (e)) come from a screen-space
 // ordering of scrambled Sobol points, so that neighbouring pixels' points are stratified together;
 // each pixel's point stays uniform, so that every Monte Carlo sum keeps its expectation, and the
-// errors that the filters of (d) and (e) average over neighbours partly cancel. (c), unfiltered, keeps random
-// numbers (the ordering would only cost it time), and so does the reference. --pixel-points
-// random: independent random numbers per pixel everywhere (the example before the ordering: its
-// output byte for byte).
+// errors that the filters of (d) and (e) average over neighbours partly cancel. (c), unfiltered,
+// keeps random numbers (the ordering would only cost it time), and so does the reference.
+// --pixel-points random: independent random numbers per pixel everywhere (the example before the
+// ordering: its output byte for byte).
 // With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
 // two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
 // (ltc::analytic_lobes::cosine_lobe), and the samples of (a), (a+) and (d) follow that table's
@@ -75,7 +75,8 @@
 // ((d) corrects it by default).
 // (a+)'s average rather than the K-sample result alone: it uses all K0 + K rays paid for, and it
 // scales the early stop's bias by K / (K0 + K). Measured in a default run with random rotations
-// (the K-sample result alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4, 8.7% (8.8%) at K = 16;
+// (the K-sample result alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4,
+// 8.7% (8.8%) at K = 16;
 // shift from (a), the early stop's bias, 5.7% (11.3%) and 7.2% (9.1%) RMS. That bias: where the
 // light is partly hidden, all K0 samples can still agree (for independent samples with
 // probability about v^K0 + (1 - v)^K0, v the visible fraction; the lattice lowers it, not to 0),

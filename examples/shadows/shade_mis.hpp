@@ -53,7 +53,7 @@ struct shaded_pixel {
 
 /// Radiance towards the camera at one pixel by `iterations` MIS iterations (file comment).
 inline shaded_pixel shade_mis(const scene& s, const tracer& tr, const pixel_hit& h, int iterations,
-                              std::uint64_t seed, const pixel_points& points = {}) {
+                              std::uint64_t seed, const pixel_points& points) {
     using ggx = ltc::brdf::ggx<float>;
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);

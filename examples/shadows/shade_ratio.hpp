@@ -18,8 +18,8 @@
 // All on a rank-1 lattice shifted by a per-pixel rotation (Cranley-Patterson), so that the
 // lattice's structured error becomes noise: by default screen-ordered (ltc::screen_point with
 // shadow_options::stratified_rotation: neighbouring pixels' lattices stratified together;
-// screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel. Visibility: Embree shadow rays
-// (tracer::light_visible, the offsets of tracer.hpp).
+// screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
+// Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp).
 #pragma once
 
 #include "camera.hpp"

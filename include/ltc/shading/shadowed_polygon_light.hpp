@@ -122,7 +122,8 @@ enum class analytic_lobes { one, two, cosine_lobe };
 template <typename T>
 struct shadow_options {
     std::size_t samples = 4;        ///< K: directions (visibility queries) per call
-    glm::vec<2, T> rotation{T(0)};  ///< Cranley-Patterson shift in [0, 1)^2, per pixel: random, or ltc::screen_point with stratified_rotation
+    /// Cranley-Patterson shift in [0, 1)^2, per pixel: random, or ltc::screen_point with stratified_rotation
+    glm::vec<2, T> rotation{T(0)};
     /// Each technique's lattice of n points shifted by rotation.x / n along its first coordinate,
     /// which repeats every 1 / n, instead of by rotation.x: for rotations stratified across pixels
     /// (ltc::screen_point of ltc/core/screen_order.hpp), so that a block of pixels' lattices of one
@@ -324,6 +325,10 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         diff.add(l.z / pi<T>() / density, vec3(T(1)), seen);
     };
     const auto to_world = [&](const vec3& w) { return frame.t1 * w.x + frame.t2 * w.y + frame.n * w.z; };
+    // The k-th of a technique's `count` lattice points, shifted as the options ask.
+    const auto lattice = [&](std::size_t k, std::size_t count) {
+        return detail::lattice_point(k, count, options.rotation, options.stratified_rotation);
+    };
     const auto plane_distance = [&](const vec3& w) {  // along the unit world direction w
         const T c = glm::dot(w, plane.normal());
         return c != T(0) ? glm::dot(vertices[0] - P, plane.normal()) / c : T(0);
@@ -365,7 +370,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         };
         // A sample's pdf is lobe_density at its direction: no second evaluation of D.
         for (std::size_t k = 0; k < ks && !reject && !lobe_sampler.empty(); ++k) {
-            const polygon_sample<T> x = lobe_sampler.sample(detail::lattice_point(k, ks, options.rotation, options.stratified_rotation));
+            const polygon_sample<T> x = lobe_sampler.sample(lattice(k, ks));
             add_local(x.direction, x.pdf);
         }
         if (reject) {
@@ -374,25 +379,25 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
             const T side = glm::dot(local[0], glm::cross(local[1] - local[0], local[2] - local[0])) < T(0) ? T(-1) : T(1);
             for (std::size_t i = 0; i < n; ++i) edge[i] = side * glm::cross(local[i], local[(i + 1) % n]);
             for (std::size_t k = 0; k < draws; ++k) {
-                const vec3 l = d.sample(detail::lattice_point(k, draws, options.rotation, options.stratified_rotation));
+                const vec3 l = d.sample(lattice(k, draws));
                 bool hit = true;
                 for (std::size_t i = 0; i < n && hit; ++i) hit = glm::dot(l, edge[i]) >= T(0);
                 if (hit) add_local(l, lobe_density(l));
             }
         }
         for (std::size_t k = 0; k < kd && cosine && !cosine_sampler.empty(); ++k) {
-            const vec3 l = cosine_sampler.sample(detail::lattice_point(k, kd, options.rotation, options.stratified_rotation)).direction;
+            const vec3 l = cosine_sampler.sample(lattice(k, kd)).direction;
             add_local(l, lobe_density(l));
         }
         for (std::size_t k = 0; k < kd && !cosine && !plane.empty(); ++k) {
-            const vec3 x = plane.sample(detail::lattice_point(k, kd, options.rotation, options.stratified_rotation));
+            const vec3 x = plane.sample(lattice(k, kd));
             const vec3 w = detail::safe_normalize(x - P);
             const vec3 l = frame.to_local(w);
             add(l, w, glm::length(x - P), density(l, w, glm::length(x - P), lobe_density(l)));
         }
     } else {
         for (std::size_t k = 0; k < K && !plane.empty(); ++k) {
-            const vec3 x = plane.sample(detail::lattice_point(k, K, options.rotation, options.stratified_rotation));
+            const vec3 x = plane.sample(lattice(k, K));
             const vec3 w = detail::safe_normalize(x - P);
             add(frame.to_local(w), w, glm::length(x - P), T(K) * plane.solid_angle_pdf(P, x));
         }
