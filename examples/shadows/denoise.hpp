@@ -25,10 +25,14 @@
 // cross an edge between tiles of different materials (tiles of one material meet at corners
 // only). Measured on the default run of an earlier commit (R = 4, no LTC correction), (d) with
 // material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 against
-// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K). Cost per shaded pixel: one filter of
+// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by default per pixel, at
+// most R, from the penumbra's width there (penumbra_radii; --filter-radius fixed: R everywhere,
+// the earlier images byte for byte). Cost per shaded pixel: one filter of
 // 2 (2R + 1) taps for (d), each tap's surface tested once for its 4 specular values (2 with
 // --ltc-correction off; taps of the centre's roughness) and its 2 diffuse ones (any material),
-// and one of 2 (2R + 1) taps of 3 values for (e); timed with the shading (measure.hpp).
+// and one of 2 (2R + 1) taps of 3 values for (e); with the penumbra's radii, a filter of 2 values
+// more (the blocker distances) and a closest-hit query for each occluded shadow ray of (d); timed
+// with the shading (measure.hpp).
 #pragma once
 
 #include "camera.hpp"
@@ -44,6 +48,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace shadows {
@@ -59,6 +64,15 @@ namespace shadows {
 inline int auto_radius(int K) {
     return std::max(1, static_cast<int>(std::lround(4.0 * std::pow(std::max(K, 1) / 4.0, -1.0 / 6.0))));
 }
+
+/// (d)'s and (e)'s filter, from the command line: the radius (-1: auto_radius(K)), (d)'s LTC
+/// correction, and (d)'s radius per pixel from the penumbra's width (penumbra_radii; at most the
+/// radius).
+struct filter_settings {
+    int radius = -1;
+    bool ltc_correction = true;
+    bool penumbra = true;
+};
 
 /// What a tap must share with the centre pixel besides its surface (kind, normal, plane): its
 /// material (any value), its roughness (the specular sums: f is GGX without Fresnel, so tiles of
@@ -105,22 +119,32 @@ inline bool shares(const filter_pixel& a, const filter_pixel& b, same_as match) 
 /// over the taps j on i's surface (the centre always is) that share what match_a asks for the
 /// first NA values, what match_b asks for the others: two filters in one pass over the taps
 /// (each value's sum and weights are those of a pass of its own, bit for bit).
+/// With `radii`, pixel i's own radius along this pass, radii[i] (at most `radius`), instead of
+/// `radius`: sigma = radii[i] / 2, and radius 0 keeps the pixel's values.
 template <std::size_t N, std::size_t NA>
 void filter_pass(const std::vector<filter_pixel>& pixels, same_as match_a, same_as match_b, int W, int H, int radius,
                  bool along_x, unsigned threads, const std::vector<std::array<double, N>>& in,
-                 std::vector<std::array<double, N>>& out) {
+                 std::vector<std::array<double, N>>& out, const std::vector<std::uint8_t>* radii = nullptr) {
     static_assert(NA <= N, "the first NA of N values");
-    std::vector<double> g(static_cast<std::size_t>(radius) + 1);
-    const double sigma = 0.5 * radius;
-    for (int k = 0; k <= radius; ++k) g[static_cast<std::size_t>(k)] = std::exp(-0.5 * k * k / (sigma * sigma));
+    // gauss[r][k]: the weight of tap k at radius r (sigma = r / 2).
+    std::vector<std::vector<double>> gauss(static_cast<std::size_t>(radius) + 1);
+    for (int r = 1; r <= radius; ++r) {
+        std::vector<double>& g = gauss[static_cast<std::size_t>(r)];
+        g.resize(static_cast<std::size_t>(r) + 1);
+        const double sigma = 0.5 * r;
+        for (int k = 0; k <= r; ++k) g[static_cast<std::size_t>(k)] = std::exp(-0.5 * k * k / (sigma * sigma));
+    }
     ltc_examples::for_each_row(H, threads, [&](int y) {
         for (int x = 0; x < W; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * W + x;
             out[i] = in[i];
             if (!pixels[i].hit->shaded()) continue;
+            const int r_i = radii != nullptr ? std::min(static_cast<int>((*radii)[i]), radius) : radius;
+            if (r_i <= 0) continue;
+            const std::vector<double>& g = gauss[static_cast<std::size_t>(r_i)];
             std::array<double, N> sum{};
             double weight_a = 0, weight_b = 0;
-            for (int k = -radius; k <= radius; ++k) {
+            for (int k = -r_i; k <= r_i; ++k) {
                 const int xx = along_x ? x + k : x, yy = along_x ? y : y + k;
                 if (xx < 0 || xx >= W || yy < 0 || yy >= H) continue;
                 const std::size_t j = static_cast<std::size_t>(yy) * W + xx;
@@ -142,15 +166,59 @@ void filter_pass(const std::vector<filter_pixel>& pixels, same_as match_a, same_
 
 /// The filter (rows, then columns) of N values per pixel, its taps on the centre's surface and
 /// sharing what match_a asks for the first NA values, what match_b asks for the others.
+/// Each pixel's filter radius along x and along y (filter_pass's radii).
+struct pixel_radii {
+    std::vector<std::uint8_t> x, y;
+};
+
+/// With `radii`, each pixel's own radius per pass (penumbra_radii), at most `radius`.
 template <std::size_t N, std::size_t NA>
 std::vector<std::array<double, N>> cross_bilateral(const std::vector<filter_pixel>& pixels, same_as match_a,
                                                    same_as match_b, int W, int H, int radius, unsigned threads,
-                                                   std::vector<std::array<double, N>> v) {
+                                                   std::vector<std::array<double, N>> v,
+                                                   const pixel_radii* radii = nullptr) {
     if (radius <= 0) return v;
     std::vector<std::array<double, N>> rows(v.size());
-    filter_pass<N, NA>(pixels, match_a, match_b, W, H, radius, true, threads, v, rows);
-    filter_pass<N, NA>(pixels, match_a, match_b, W, H, radius, false, threads, rows, v);
+    filter_pass<N, NA>(pixels, match_a, match_b, W, H, radius, true, threads, v, rows, radii ? &radii->x : nullptr);
+    filter_pass<N, NA>(pixels, match_a, match_b, W, H, radius, false, threads, rows, v, radii ? &radii->y : nullptr);
     return v;
+}
+
+/// (d) with --filter-radius penumbra: each pixel's radius from the width of the penumbra there,
+/// as percentage-closer soft shadows estimate it (Fernando, "Percentage-Closer Soft Shadows",
+/// SIGGRAPH 2005 sketch): a blocker at t_b from the point, towards a light of extent w_l at t_l,
+/// casts a penumbra of width w_p = w_l t_b / (t_l - t_b) on a receiver facing the light. t_b /
+/// (t_l - t_b) is averaged over the occluded samples of the pixel and of its neighbours on its
+/// surface (the filter of radius R, weighted by their counts: a lit pixel next to a penumbra takes
+/// its neighbours'); w_l = sqrt(area). In pixels, w_p over the pixel's footprint f (its distance
+/// from the eye times the pixel's angle) along x, and over f / |N.V| along y (the surface seen
+/// obliquely is foreshortened along the image's vertical, the camera having no roll); the radius
+/// is half of it (sigma = R / 2: a quarter of the penumbra's width, over which a Gaussian blurs a
+/// ramp little), rounded, in [1, R]. No occluded sample nearby: R (every ratio is 1 there).
+inline pixel_radii penumbra_radii(const std::vector<filter_pixel>& pixels, const std::vector<shaded_pixel>& px,
+                                  const scene& s, int W, int H, int radius, unsigned threads) {
+    std::vector<std::array<double, 2>> v(px.size());
+    for (std::size_t i = 0; i < px.size(); ++i) v[i] = {px[i].blocker_ratio_sum, static_cast<double>(px[i].occluded)};
+    v = cross_bilateral<2, 2>(pixels, same_as::geometry, same_as::geometry, W, H, radius, threads, std::move(v));
+    const double light_extent = std::sqrt(static_cast<double>(s.light_area()));
+    const double pixel_angle = 2.0 * std::tan(0.5 * glm::radians(static_cast<double>(s.vfov_deg))) / H;
+    pixel_radii r{std::vector<std::uint8_t>(px.size(), 0), std::vector<std::uint8_t>(px.size(), 0)};
+    const auto clamped = [radius](double w) {  // half the width, in [1, radius]
+        return static_cast<std::uint8_t>(std::clamp(static_cast<int>(std::lround(std::min(0.5 * w, 255.0))), 1, radius));
+    };
+    for (std::size_t i = 0; i < px.size(); ++i) {
+        const pixel_hit& h = *pixels[i].hit;
+        if (!h.shaded()) continue;
+        if (!(v[i][1] > 0)) {
+            r.x[i] = r.y[i] = static_cast<std::uint8_t>(radius);
+            continue;
+        }
+        const double penumbra = light_extent * v[i][0] / v[i][1];
+        const double footprint = static_cast<double>(glm::length(h.p - s.eye)) * pixel_angle;
+        r.x[i] = clamped(penumbra / footprint);
+        r.y[i] = clamped(penumbra * std::abs(static_cast<double>(glm::dot(h.n, h.v))) / footprint);
+    }
+    return r;
 }
 
 /// (d)'s values filtered in one pass over the taps: NS specular values per pixel (taps of the
@@ -159,7 +227,7 @@ template <std::size_t NS, typename SpecularValues>
 std::vector<std::array<double, NS + 2>> filter_estimates(const std::vector<filter_pixel>& pixels,
                                                          const std::vector<shaded_pixel>& px,
                                                          SpecularValues&& specular_values, int W, int H, int radius,
-                                                         unsigned threads) {
+                                                         unsigned threads, const pixel_radii* radii) {
     std::vector<std::array<double, NS + 2>> v(px.size());
     for (std::size_t i = 0; i < px.size(); ++i) {
         const std::array<double, NS> a = specular_values(px[i]);
@@ -168,13 +236,16 @@ std::vector<std::array<double, NS + 2>> filter_estimates(const std::vector<filte
         v[i][NS + 1] = px[i].diffuse_estimates.total;
     }
     return cross_bilateral<NS + 2, NS>(pixels, same_as::roughness, same_as::geometry, W, H, radius, threads,
-                                       std::move(v));
+                                       std::move(v), radii);
 }
 
 /// (d): each pixel's radiance from its analytic terms and the filtered estimates (file comment).
 inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, int W, int H, int radius, bool correct,
-                          unsigned threads, std::vector<shaded_pixel>& px) {
+                          bool penumbra, unsigned threads, std::vector<shaded_pixel>& px) {
     const std::vector<filter_pixel> pixels = filter_pixels(hits, s);
+    pixel_radii radii;
+    if (penumbra) radii = penumbra_radii(pixels, px, s, W, H, radius, threads);
+    const pixel_radii* own = penumbra ? &radii : nullptr;
     const auto diffuse = [&](std::size_t i, double visible, double total) {
         return ltc::ratio_shading(px[i].analytic.diffuse, ltc::ratio_estimates<double>{visible, total});
     };
@@ -186,7 +257,7 @@ inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, in
                 const auto &e = p.specular_estimates, &ef = p.specular_fresnel_estimates;
                 return std::array<double, 4>{e.visible, e.analytic, ef.visible, ef.analytic};
             },
-            W, H, radius, threads);
+            W, H, radius, threads, own);
         for (std::size_t i = 0; i < px.size(); ++i) {
             if (!hits[i].shaded()) continue;
             const material& m = s.materials[static_cast<std::size_t>(hits[i].material)];
@@ -203,7 +274,7 @@ inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, in
         [](const shaded_pixel& p) {
             return std::array<double, 2>{p.specular_estimates.visible, p.specular_estimates.total};
         },
-        W, H, radius, threads);
+        W, H, radius, threads, own);
     for (std::size_t i = 0; i < px.size(); ++i)
         if (hits[i].shaded())
             px[i].radiance = ltc::ratio_shading(px[i].analytic.specular, ltc::ratio_estimates<double>{v[i][0], v[i][1]}) +

@@ -3,8 +3,8 @@
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
 //           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]
-//           [--denoise-radius R|auto] [--ltc-correction on|off] [--pixel-points screen|random]
-//           [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E]
+//           [--denoise-radius R|auto] [--filter-radius penumbra|fixed] [--ltc-correction on|off]
+//           [--pixel-points screen|random] [--reference-spp N] [--threads K] [--out DIR] [--seed S] [--exposure E]
 //           [--lobes 1|2|cosine] [--help]
 //
 // The scene (z up; scene.hpp), every surface triangles of one Embree scene (tracer.hpp): a floor
@@ -41,7 +41,11 @@
 //                    by default (--ltc-correction on) the specular term instead takes the
 //                    filtered estimates of the shadowed integrals relative to their analytic
 //                    values, per part of Hill's Fresnel split (ltc::corrected_specular), which
-//                    corrects the LTC's fitting error as well;
+//                    corrects the LTC's fitting error as well; by default (--filter-radius
+//                    penumbra) each pixel's radius is at most R and about half the width of the
+//                    penumbra there, as the blocker distances of its and its neighbours'
+//                    occluded shadow rays give it (percentage-closer soft shadows' estimate:
+//                    denoise.hpp's penumbra_radii), so that hard shadow edges are not blurred;
 //   (e)  mis_denoised  (c), then its radiance filtered with the same weights: the same denoiser on
 //                    plain Monte Carlo, so that (d) is compared with a denoised baseline too.
 //                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma R / 2
@@ -186,7 +190,8 @@ int main(int argc, char** argv) {
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr
     const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
-                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, 0, false, false, 1, "reference");
+                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, {0, false, false}, false, 1,
+                                           "reference");
     std::size_t nonfinite = ref.nonfinite;
     const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
     std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "
@@ -206,8 +211,7 @@ int main(int argc, char** argv) {
         const method m = methods[k];
         for (int spp : *lists[k]) {
             const method_image r =
-                render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.denoise_radius,
-                              opt.ltc_correction, opt.screen_points);
+                render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.filter, opt.screen_points);
             nonfinite += r.nonfinite;
             const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
             const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
@@ -227,8 +231,7 @@ int main(int argc, char** argv) {
     // (a)'s, (a+)'s and (d)'s errors split into their noise and bias: a second render of each with other seeds.
     for (seed_pair& p : pairs) {
         const method_image second = render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp,
-                                                  mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.denoise_radius,
-                                                  opt.ltc_correction, opt.screen_points, 1);
+                                                  mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.filter, opt.screen_points, 1);
         p.second = second.img;
         nonfinite += second.nonfinite;
     }

@@ -45,14 +45,14 @@ struct method_image {
 };
 
 /// Every pixel by `which` at `spp`, seeded by (seed, which, spp, pixel), the ratio methods' analytic
-/// part with `lobes`, (d)'s and (e)'s filter of radius denoise_radius (-1: auto_radius(spp);
-/// denoise.hpp), (d)'s specular term corrected for the LTC's error with ltc_correction, the pixels'
+/// part with `lobes`, (d)'s and (e)'s filter as `filter` sets it (its radius -1: auto_radius(spp);
+/// denoise.hpp), the pixels'
 /// sample points screen-ordered with screen_points (screen_order.hpp); timed with the
 /// filter (file comment) over up to max_runs runs (1: the reference, the second seeds). With a
 /// label: a progress bar on stderr.
 inline method_image render_method(const scene& s, const tracer& tr, const std::vector<pixel_hit>& hits, int W, int H,
                                   unsigned threads, method which, int spp, std::uint64_t seed, ltc::analytic_lobes lobes,
-                                  int denoise_radius, bool ltc_correction, bool screen_points, int max_runs = 5,
+                                  const filter_settings& filter, bool screen_points, int max_runs = 5,
                                   const char* label = nullptr) {
     const std::size_t count = static_cast<std::size_t>(W) * H;
     // (a+) draws (a)'s random numbers (common random numbers: where K <= K0 its first call is (a)'s
@@ -63,7 +63,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
     const method seeded_as = which == method::ratio_ltc_adaptive || which == method::ratio_ltc_denoised ? method::ratio_ltc
                              : which == method::mis_denoised                                          ? method::mis
                                                                                                       : which;
-    const int radius = denoise_radius >= 0 ? denoise_radius : auto_radius(spp);
+    const int radius = filter.radius >= 0 ? filter.radius : auto_radius(spp);
     const std::uint64_t run =
         mix_seed(mix_seed(seed, static_cast<std::uint64_t>(seeded_as)), static_cast<std::uint64_t>(spp));
     std::vector<shaded_pixel> px(count);
@@ -79,11 +79,12 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                 for (int x = 0; x < W; ++x) {
                     const std::size_t i = static_cast<std::size_t>(y) * W + x;
                     const pixel_points points{screen_points && which != method::mis, x, y, mix_seed(run, 0x5C2EE7u)};
-                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes, points);
+                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes, points, filter.penumbra);
                 }
             },
             label);
-        if (which == method::ratio_ltc_denoised) denoise_ratio(hits, s, W, H, radius, ltc_correction, threads, px);
+        if (which == method::ratio_ltc_denoised)
+            denoise_ratio(hits, s, W, H, radius, filter.ltc_correction, filter.penumbra, threads, px);
         if (which == method::mis_denoised) denoise_radiance(hits, s, W, H, radius, threads, px);
         const double t = ltc_examples::seconds_since(t0);
         r.cpu_seconds = std::min(r.cpu_seconds, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/cli.hpp"
+#include "denoise.hpp"  // filter_settings
 
 #include <ltc/shading/shadowed_polygon_light.hpp>
 
@@ -22,8 +23,10 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};   // (c): iterations
     std::vector<int> denoised_spp{1, 2, 4, 8, 16, 32, 64};        // (d): K
     std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
-    int denoise_radius = -1;  // (d) and (e): the filter's half-width in pixels, -1: auto_radius(K) (denoise.hpp)
-    bool ltc_correction = true;  // (d): the specular term's LTC error corrected too (ltc::corrected_specular)
+    // (d) and (e): the filter's half-width in pixels (-1: auto_radius(K)); (d): the specular term's
+    // LTC error corrected too (ltc::corrected_specular), and each pixel's radius from the
+    // penumbra's width (denoise.hpp: filter_settings)
+    filter_settings filter;
     bool screen_points = true;   // every method but (c) and the reference: screen-ordered points (screen_order.hpp)
     int reference_spp = 4096;  // (c)'s iterations for the reference
     ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b), (d): the analytic part's table
@@ -33,7 +36,8 @@ inline void print_help(const char* argv0) {
     std::printf(
         "usage: %s [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]\n"
         "          [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]\n"
-        "          [--denoise-radius R|auto] [--ltc-correction on|off] [--pixel-points screen|random]\n"
+        "          [--denoise-radius R|auto] [--filter-radius penumbra|fixed] [--ltc-correction on|off]\n"
+        "          [--pixel-points screen|random]\n"
         "          [--reference-spp N] [--threads K]\n"
         "          [--out DIR] [--seed S] [--exposure E] [--lobes 1|2|cosine] [--help]\n"
         "\n"
@@ -69,6 +73,11 @@ inline void print_help(const char* argv0) {
         "                      (d)'s and (e)'s filter: 2 R + 1 taps per pass, 0 none; auto (the\n"
         "                      default): R = 4 (K / 4)^(-1/6) rounded, K the samples or iterations\n"
         "                      (5 at K = 1, 4 at 2-8, 3 at 16-64, 2 at 128-256)\n"
+        "  --filter-radius penumbra|fixed\n"
+        "                      (d)'s radius per pixel: by default at most R and half the penumbra's\n"
+        "                      width there (in pixels), from the blocker distances of the occluded\n"
+        "                      shadow rays of the pixel and its neighbours (percentage-closer soft\n"
+        "                      shadows' estimate), so that hard shadow edges stay sharp; or R everywhere\n"
         "  --ltc-correction on|off\n"
         "                      (d)'s specular term: the pixel's analytic values times the filtered\n"
         "                      Monte Carlo estimates of the shadowed integrals relative to theirs,\n"
@@ -141,7 +150,13 @@ inline int parse_args(int argc, char** argv, options& o) {
         if (a == "--ltc-correction") {
             const std::string t(v.text);
             if (t != "on" && t != "off") return option_status::bad;
-            o.ltc_correction = t == "on";
+            o.filter.ltc_correction = t == "on";
+            return option_status::taken;
+        }
+        if (a == "--filter-radius") {
+            const std::string t(v.text);
+            if (t != "penumbra" && t != "fixed") return option_status::bad;
+            o.filter.penumbra = t == "penumbra";
             return option_status::taken;
         }
         if (a == "--pixel-points") {
@@ -152,11 +167,11 @@ inline int parse_args(int argc, char** argv, options& o) {
         }
         if (a == "--denoise-radius") {
             if (std::string(v.text) == "auto") {
-                o.denoise_radius = -1;
+                o.filter.radius = -1;
                 return option_status::taken;
             }
             if (!v.integer_in(0, 64)) return option_status::bad;
-            o.denoise_radius = static_cast<int>(v.number);
+            o.filter.radius = static_cast<int>(v.number);
             return option_status::taken;
         }
         if (a != "--reference-spp") return option_status::unknown;

@@ -49,6 +49,11 @@ struct shaded_pixel {
     // (d)'s filter only: denoise.hpp).
     ltc::polygon_light_result<double> analytic;
     ltc::ratio_estimates<double> specular_estimates, diffuse_estimates, specular_fresnel_estimates;
+    // (d) with --filter-radius penumbra: over the occluded samples of (a)'s call, the sum of
+    // t_b / (t_l - t_b) (t_b the blocker's distance, t_l the light's, along the shadow ray) and
+    // their count (denoise.hpp's penumbra_radii).
+    double blocker_ratio_sum = 0;
+    int occluded = 0;
 };
 
 /// Radiance towards the camera at one pixel by `iterations` MIS iterations (file comment).

@@ -77,7 +77,8 @@ constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
 inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, const tracer& tr, const pixel_hit& h,
                                                                ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
                                                                ltc::ground_truth::splitmix64& rng,
-                                                               const pixel_points* points = nullptr) {
+                                                               const pixel_points* points = nullptr,
+                                                               shaded_pixel* blockers = nullptr) {
     const material& m = s.materials[static_cast<std::size_t>(h.material)];
     ltc::shadow_options<float> options;
     options.samples = static_cast<std::size_t>(K);
@@ -90,8 +91,16 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
     options.sampler = sampler;
     options.lobes = lobes;
     const vec3 N = h.n;
-    const auto visible = [&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
-        return tr.light_visible(origin, N, unit_direction, distance);
+    const auto visible = [&tr, N, blockers](const vec3& origin, const vec3& unit_direction, float distance) {
+        const bool seen = tr.light_visible(origin, N, unit_direction, distance);
+        if (!seen && blockers != nullptr) {  // the blocker's distance: a second query, occluded rays only
+            const float t_b = tr.blocker_distance(origin, N, unit_direction, distance);
+            if (t_b > 0) {
+                blockers->blocker_ratio_sum += static_cast<double>(t_b) / std::max(static_cast<double>(distance - t_b), 1e-6);
+                ++blockers->occluded;
+            }
+        }
+        return seen;
     };
     return ltc::shade_polygon_light_shadowed(h.p, h.n, h.v, m.roughness, m.f0, m.albedo, s.light_radiance,
                                              s.light_vertices, 4, ltc::sidedness::one_sided, visible, options);
@@ -106,14 +115,16 @@ inline bool agreed(const glm::vec3& ratio, const glm::vec3& unshadowed) {
 
 /// Radiance towards the camera at one pixel by (a), (a+) or (b) with K = spp samples.
 inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                                std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points) {
+                                std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points,
+                                bool record_blockers = false) {
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
     if (!h.shaded() || spp <= 0) return out;
     ltc::ground_truth::splitmix64 rng(seed);
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
-    const ltc::shadowed_polygon_light_result<float> r = shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points);
+    const ltc::shadowed_polygon_light_result<float> r =
+        shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points, record_blockers ? &out : nullptr);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
@@ -136,10 +147,11 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
 /// One pixel by any method, before (d)'s and (e)'s filter: K = spp samples for (a), (a+), (b) and
 /// (d), spp MIS iterations (one BRDF and one light sample each) for (c) and (e).
 inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                          std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points) {
+                          std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points,
+                          bool record_blockers = false) {
     if (which == method::mis || which == method::mis_denoised) return shade_mis(s, tr, h, spp, seed, points);
     return shade_ratio(s, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed, lobes,
-                       points);
+                       points, record_blockers && which == method::ratio_ltc_denoised);
 }
 
 }  // namespace shadows

@@ -1,6 +1,7 @@
 // shadows/tracer.hpp -- the scene in Embree 3: the floor, the occluders and the light, each a
-// triangle geometry of one RTCScene; closest hits (camera rays, BRDF-sampled rays) by
-// rtcIntersect1 and shadow rays by rtcOccluded1, with the ray offsets of the file comment below.
+// triangle geometry of one RTCScene; closest hits (camera rays, BRDF-sampled rays, the blockers of
+// (d)'s occluded shadow rays) by rtcIntersect1 and shadow rays by rtcOccluded1, with the ray
+// offsets of the file comment below.
 //
 // Offsets. Scene coordinates are at most ~10 units, so a hit point org + t dir carries a float
 // rounding error of about 10 * 2^-24 ~ 1e-6 units. Rays leave a surface from P + surface_offset N
@@ -98,6 +99,15 @@ class tracer {
     bool light_visible(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
         const float tfar = distance - light_margin;
         return tfar <= 0 || unoccluded(P + surface_offset * N, unit_direction, tfar);
+    }
+
+    /// The distance from P (offset as light_visible's ray) to the first occluder along the unit
+    /// direction within light_visible's range, or 0 where nothing is hit.
+    float blocker_distance(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
+        const float tfar = distance - light_margin;
+        if (tfar <= 0) return 0.0f;
+        const ray_hit h = intersect(P + surface_offset * N, unit_direction, tfar);
+        return h.kind == ray_hit::none ? 0.0f : h.t;
     }
 
   private:
