@@ -30,6 +30,13 @@ class pinhole {
         return glm::normalize(forward_ + sx * right_ + sy * up_);
     }
 
+    /// The unit vectors of the view and of the image's rows and columns, and a pixel's side on the
+    /// image plane at unit distance along forward().
+    const vec3& forward() const { return forward_; }
+    const vec3& right() const { return right_; }
+    const vec3& up() const { return up_; }
+    float pixel_size() const { return 2.0f * h_ / static_cast<float>(height_); }
+
   private:
     vec3 forward_, right_, up_;
     float h_, w_;  // half the image plane's height and width at unit distance

@@ -14,19 +14,20 @@
 //        f (1 - V.H)^5: ltc::corrected_specular), which corrects the LTC's fitting error as well
 //        as the shadows (the pixel's own analytic values times the filtered Monte Carlo estimate
 //        relative to the filtered analytic one);
-//   (e)  to (c)'s radiance, with the same weights, its taps of the centre's material only (the
-//        radiance carries the albedo and the Fresnel term): the same filter on plain Monte
-//        Carlo, for a fair comparison; it blurs the shading too.
-// The filter: separable (rows, then columns: (2R + 1) taps each instead of (2R + 1)^2), Gaussian
-// in pixels (sigma = R / 2), each tap kept only on the same surface as the centre pixel: the same
+//   (e)  to (c)'s radiance, its taps of the centre's material only (the radiance carries the
+//        albedo and the Fresnel term): the same filter on plain Monte Carlo, for a fair
+//        comparison; it blurs the shading too. (c) records no blockers: (e) keeps the radius R
+//        everywhere, where (d) by default takes a radius per pixel (below).
+// The filter: separable (rows, then columns: (2r + 1) taps each instead of (2r + 1)^2), Gaussian
+// in pixels (sigma = r / 2, r the pixel's radius: R, or (d)'s own), each tap kept only on the same surface as the centre pixel: the same
 // kind (floor or occluder), normals within 18 degrees, and the tap's point within 1% of the
 // centre's distance from its tangent plane; and as above, the same material, roughness or
 // neither (same_as). No pass crosses the box's edges or the silhouettes; (e)'s passes do not
 // cross an edge between tiles of different materials (tiles of one material meet at corners
 // only). Measured on the default run of an earlier commit (R = 4, no LTC correction), (d) with
 // material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 against
-// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by default per pixel, at
-// most R, from the penumbra's width there (penumbra_radii; --filter-radius fixed: R everywhere,
+// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by default per pixel, in
+// [1, R], from the penumbra's width there (penumbra_radii; --filter-radius fixed: R everywhere,
 // the earlier images byte for byte). Cost per shaded pixel: one filter of
 // 2 (2R + 1) taps for (d), each tap's surface tested once for its 4 specular values (2 with
 // --ltc-correction off; taps of the centre's roughness) and its 2 diffuse ones (any material),
@@ -36,7 +37,9 @@
 #pragma once
 
 #include "camera.hpp"
+#include "common/pinhole.hpp"
 #include "common/threads.hpp"
+#include "filter_settings.hpp"
 #include "scene.hpp"
 #include "shade_mis.hpp"  // shaded_pixel
 
@@ -64,15 +67,6 @@ namespace shadows {
 inline int auto_radius(int K) {
     return std::max(1, static_cast<int>(std::lround(4.0 * std::pow(std::max(K, 1) / 4.0, -1.0 / 6.0))));
 }
-
-/// (d)'s and (e)'s filter, from the command line: the radius (-1: auto_radius(K)), (d)'s LTC
-/// correction, and (d)'s radius per pixel from the penumbra's width (penumbra_radii; at most the
-/// radius).
-struct filter_settings {
-    int radius = -1;
-    bool ltc_correction = true;
-    bool penumbra = true;
-};
 
 /// What a tap must share with the centre pixel besides its surface (kind, normal, plane): its
 /// material (any value), its roughness (the specular sums: f is GGX without Fresnel, so tiles of
@@ -164,14 +158,14 @@ void filter_pass(const std::vector<filter_pixel>& pixels, same_as match_a, same_
     });
 }
 
-/// The filter (rows, then columns) of N values per pixel, its taps on the centre's surface and
-/// sharing what match_a asks for the first NA values, what match_b asks for the others.
 /// Each pixel's filter radius along x and along y (filter_pass's radii).
 struct pixel_radii {
     std::vector<std::uint8_t> x, y;
 };
 
-/// With `radii`, each pixel's own radius per pass (penumbra_radii), at most `radius`.
+/// The filter (rows, then columns) of N values per pixel, its taps on the centre's surface and
+/// sharing what match_a asks for the first NA values, what match_b asks for the others; with
+/// `radii`, each pixel's own radius per pass (penumbra_radii), at most `radius`.
 template <std::size_t N, std::size_t NA>
 std::vector<std::array<double, N>> cross_bilateral(const std::vector<filter_pixel>& pixels, same_as match_a,
                                                    same_as match_b, int W, int H, int radius, unsigned threads,
@@ -184,24 +178,40 @@ std::vector<std::array<double, N>> cross_bilateral(const std::vector<filter_pixe
     return v;
 }
 
+/// The length on the surface (point p, unit normal n, seen along the unit ray direction d) that
+/// one pixel's step along the image axis `axis` covers: the step depth * pixel_size * axis on the
+/// plane at p's depth, carried along d onto the surface's tangent plane (first order; |n.d|
+/// floored at 1e-3 at silhouettes).
+inline double pixel_footprint(const ltc_examples::pinhole& camera, const vec3& eye, const vec3& p, const vec3& n,
+                              const vec3& d, const vec3& axis) {
+    const double depth = static_cast<double>(glm::dot(p - eye, camera.forward()));
+    const double nd = static_cast<double>(glm::dot(n, d));
+    const double nd_floored = std::copysign(std::max(std::abs(nd), 1e-3), nd);
+    const glm::dvec3 step = glm::dvec3(axis) - glm::dvec3(d) * (static_cast<double>(glm::dot(n, axis)) / nd_floored);
+    return depth * static_cast<double>(camera.pixel_size()) * glm::length(step);
+}
+
 /// (d) with --filter-radius penumbra: each pixel's radius from the width of the penumbra there,
 /// as percentage-closer soft shadows estimate it (Fernando, "Percentage-Closer Soft Shadows",
 /// SIGGRAPH 2005 sketch): a blocker at t_b from the point, towards a light of extent w_l at t_l,
-/// casts a penumbra of width w_p = w_l t_b / (t_l - t_b) on a receiver facing the light. t_b /
-/// (t_l - t_b) is averaged over the occluded samples of the pixel and of its neighbours on its
-/// surface (the filter of radius R, weighted by their counts: a lit pixel next to a penumbra takes
-/// its neighbours'); w_l = sqrt(area). In pixels, w_p over the pixel's footprint f (its distance
-/// from the eye times the pixel's angle) along x, and over f / |N.V| along y (the surface seen
-/// obliquely is foreshortened along the image's vertical, the camera having no roll); the radius
-/// is half of it (sigma = R / 2: a quarter of the penumbra's width, over which a Gaussian blurs a
-/// ramp little), rounded, in [1, R]. No occluded sample nearby: R (every ratio is 1 there).
+/// casts a penumbra about w_l t_b / (t_l - t_b) wide. t_b / (t_l - t_b) is averaged over the
+/// occluded samples of the pixel and of its neighbours on its surface (the filter of radius R,
+/// weighted by their counts: a lit pixel next to a penumbra takes its neighbours'). w_l is an
+/// isotropic proxy, sqrt(area), for a light whose extent depends on the direction across the
+/// edge (2.6 x 1 here; the receiver's tilt towards the light is left out too: per-axis projected
+/// extents measured no better). In pixels: the width over the pixel's footprint along the
+/// image's rows and along its columns (pixel_footprint: the surface seen obliquely is
+/// foreshortened). The radius is half of it (sigma = r / 2, a quarter of the width, over which a
+/// Gaussian blurs a ramp little: a factor chosen before measuring, for the proxy above), rounded,
+/// in [1, R]. No occluded sample nearby: R (every ratio is 1 there). R >= 1.
 inline pixel_radii penumbra_radii(const std::vector<filter_pixel>& pixels, const std::vector<shaded_pixel>& px,
                                   const scene& s, int W, int H, int radius, unsigned threads) {
     std::vector<std::array<double, 2>> v(px.size());
-    for (std::size_t i = 0; i < px.size(); ++i) v[i] = {px[i].blocker_ratio_sum, static_cast<double>(px[i].occluded)};
+    for (std::size_t i = 0; i < px.size(); ++i)
+        v[i] = {px[i].blockers.ratio_sum, static_cast<double>(px[i].blockers.samples)};
     v = cross_bilateral<2, 2>(pixels, same_as::geometry, same_as::geometry, W, H, radius, threads, std::move(v));
     const double light_extent = std::sqrt(static_cast<double>(s.light_area()));
-    const double pixel_angle = 2.0 * std::tan(0.5 * glm::radians(static_cast<double>(s.vfov_deg))) / H;
+    const ltc_examples::pinhole camera(s.eye, s.target, s.vfov_deg, W, H);
     pixel_radii r{std::vector<std::uint8_t>(px.size(), 0), std::vector<std::uint8_t>(px.size(), 0)};
     const auto clamped = [radius](double w) {  // half the width, in [1, radius]
         return static_cast<std::uint8_t>(std::clamp(static_cast<int>(std::lround(std::min(0.5 * w, 255.0))), 1, radius));
@@ -214,9 +224,8 @@ inline pixel_radii penumbra_radii(const std::vector<filter_pixel>& pixels, const
             continue;
         }
         const double penumbra = light_extent * v[i][0] / v[i][1];
-        const double footprint = static_cast<double>(glm::length(h.p - s.eye)) * pixel_angle;
-        r.x[i] = clamped(penumbra / footprint);
-        r.y[i] = clamped(penumbra * std::abs(static_cast<double>(glm::dot(h.n, h.v))) / footprint);
+        r.x[i] = clamped(penumbra / pixel_footprint(camera, s.eye, h.p, h.n, -h.v, camera.right()));
+        r.y[i] = clamped(penumbra / pixel_footprint(camera, s.eye, h.p, h.n, -h.v, camera.up()));
     }
     return r;
 }
@@ -240,9 +249,11 @@ std::vector<std::array<double, NS + 2>> filter_estimates(const std::vector<filte
 }
 
 /// (d): each pixel's radiance from its analytic terms and the filtered estimates (file comment).
-inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, int W, int H, int radius, bool correct,
-                          bool penumbra, unsigned threads, std::vector<shaded_pixel>& px) {
+/// radius: R (resolved: not -1); filter.penumbra only with R >= 1 (render_method).
+inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, int W, int H, int radius,
+                          const filter_settings& filter, unsigned threads, std::vector<shaded_pixel>& px) {
     const std::vector<filter_pixel> pixels = filter_pixels(hits, s);
+    const bool correct = filter.ltc_correction, penumbra = filter.penumbra && radius > 0;
     pixel_radii radii;
     if (penumbra) radii = penumbra_radii(pixels, px, s, W, H, radius, threads);
     const pixel_radii* own = penumbra ? &radii : nullptr;

@@ -46,10 +46,11 @@
 //                    penumbra there, as the blocker distances of its and its neighbours'
 //                    occluded shadow rays give it (percentage-closer soft shadows' estimate:
 //                    denoise.hpp's penumbra_radii), so that hard shadow edges are not blurred;
-//   (e)  mis_denoised  (c), then its radiance filtered with the same weights: the same denoiser on
-//                    plain Monte Carlo, so that (d) is compared with a denoised baseline too.
-//                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma R / 2
-//                    pixels (--denoise-radius R; by default R = 4 (K / 4)^(-1/6) rounded, K the
+//   (e)  mis_denoised  (c), then its radiance filtered by the same filter with the radius R
+//                    everywhere ((c) records no blockers): the same denoiser on plain Monte
+//                    Carlo, so that (d) is compared with a denoised baseline too.
+//                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma r / 2
+//                    pixels, r = R or (d)'s own radius (--denoise-radius R; by default R = 4 (K / 4)^(-1/6) rounded, K the
 //                    samples or iterations: denoise.hpp's auto_radius), on the centre pixel's surface only
 //                    (kind, normal, plane), timed with the shading; (e)'s taps of the centre's
 //                    material, (d)'s diffuse sums shared across materials and its specular sums
@@ -71,8 +72,8 @@
 // first, or only, LTC; (c), (e) and the reference do not change.
 // "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
 // (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
-// shadow and K BRDF rays
-// (the tables' rays/px). The reference is (c) at --reference-spp iterations with its own seeds:
+// shadow and K BRDF rays (the tables' rays/px; (d) with --filter-radius penumbra also queries each
+// occluded shadow ray's closest hit, not counted there, timed). The reference is (c) at --reference-spp iterations with its own seeds:
 // direct lighting only, since the light is the only emitter and the floor's inter-reflection is
 // not what the methods compute. It is the direct light of the real BRDF, so the errors of (a),
 // (a+), (b) and (d) with --ltc-correction off include the LTC fit's as well as their shadows'
@@ -189,9 +190,10 @@ int main(int argc, char** argv) {
 
     // The reference: (c) with its own seeds.
     std::fflush(stdout);  // the progress bar goes to stderr
+    filter_settings no_filter;  // the reference is (c): no filter, no blockers
+    no_filter.radius = 0, no_filter.ltc_correction = false, no_filter.penumbra = false;
     const method_image ref = render_method(s, *tr, hits, W, H, opt.threads, method::mis, opt.reference_spp,
-                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, {0, false, false}, false, 1,
-                                           "reference");
+                                           mix_seed(opt.seed, 0x7EFu), opt.lobes, no_filter, false, 1, "reference");
     std::size_t nonfinite = ref.nonfinite;
     const noise_measure ref_noise = reference_noise(hits, ref, dark_floor);
     std::printf("reference: %d iterations, %.2f s; its relative standard error over the floor: mean %.2f%%, "

@@ -64,6 +64,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                              : which == method::mis_denoised                                          ? method::mis
                                                                                                       : which;
     const int radius = filter.radius >= 0 ? filter.radius : auto_radius(spp);
+    const bool penumbra = filter.penumbra && radius > 0;  // (d) records its blockers for penumbra_radii
     const std::uint64_t run =
         mix_seed(mix_seed(seed, static_cast<std::uint64_t>(seeded_as)), static_cast<std::uint64_t>(spp));
     std::vector<shaded_pixel> px(count);
@@ -79,12 +80,12 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                 for (int x = 0; x < W; ++x) {
                     const std::size_t i = static_cast<std::size_t>(y) * W + x;
                     const pixel_points points{screen_points && which != method::mis, x, y, mix_seed(run, 0x5C2EE7u)};
-                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes, points, filter.penumbra);
+                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes, points, penumbra);
                 }
             },
             label);
         if (which == method::ratio_ltc_denoised)
-            denoise_ratio(hits, s, W, H, radius, filter.ltc_correction, filter.penumbra, threads, px);
+            denoise_ratio(hits, s, W, H, radius, filter, threads, px);
         if (which == method::mis_denoised) denoise_radiance(hits, s, W, H, radius, threads, px);
         const double t = ltc_examples::seconds_since(t0);
         r.cpu_seconds = std::min(r.cpu_seconds, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "common/cli.hpp"
-#include "denoise.hpp"  // filter_settings
+#include "filter_settings.hpp"
 
 #include <ltc/shading/shadowed_polygon_light.hpp>
 

@@ -4,7 +4,8 @@
 // of Heitz, Hill and McGuire 2018: the analytic, unshadowed LTC shading times the ratio of two
 // Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
 // per term (specular, diffuse); (d) keeps (a)'s estimates for its filter (each term's two sums
-// and analytic value, and the specular term's for Schlick's part).
+// and analytic value, and the specular term's for Schlick's part; with --filter-radius penumbra,
+// its occluded samples' blocker distances: tracer::blocker_distance).
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
 //        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~8x more per sample) in
@@ -19,7 +20,9 @@
 // lattice's structured error becomes noise: by default screen-ordered (ltc::screen_point with
 // shadow_options::stratified_rotation: neighbouring pixels' lattices stratified together;
 // screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
-// Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp).
+// Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp); for (d) with
+// --filter-radius penumbra, each occluded one's blocker by a closest-hit query
+// (tracer::blocker_distance).
 #pragma once
 
 #include "camera.hpp"
@@ -78,7 +81,7 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
                                                                ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
                                                                ltc::ground_truth::splitmix64& rng,
                                                                const pixel_points* points = nullptr,
-                                                               shaded_pixel* blockers = nullptr) {
+                                                               blocker_stats* blockers = nullptr) {
     const material& m = s.materials[static_cast<std::size_t>(h.material)];
     ltc::shadow_options<float> options;
     options.samples = static_cast<std::size_t>(K);
@@ -94,10 +97,11 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
     const auto visible = [&tr, N, blockers](const vec3& origin, const vec3& unit_direction, float distance) {
         const bool seen = tr.light_visible(origin, N, unit_direction, distance);
         if (!seen && blockers != nullptr) {  // the blocker's distance: a second query, occluded rays only
+            // t_b <= distance - light_margin (the query's range), so the division is by >= 1e-3.
             const float t_b = tr.blocker_distance(origin, N, unit_direction, distance);
             if (t_b > 0) {
-                blockers->blocker_ratio_sum += static_cast<double>(t_b) / std::max(static_cast<double>(distance - t_b), 1e-6);
-                ++blockers->occluded;
+                blockers->ratio_sum += static_cast<double>(t_b) / static_cast<double>(distance - t_b);
+                ++blockers->samples;
             }
         }
         return seen;
@@ -124,7 +128,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
     const ltc::shadowed_polygon_light_result<float> r =
-        shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points, record_blockers ? &out : nullptr);
+        shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points, record_blockers ? &out.blockers : nullptr);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
