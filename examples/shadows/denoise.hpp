@@ -18,22 +18,22 @@
 //        albedo and the Fresnel term): the same filter on plain Monte Carlo, for a fair
 //        comparison; it blurs the shading too. (c) records no blockers: (e) keeps the radius R
 //        everywhere, where (d) by default takes a radius per pixel (below).
-// The filter: separable (rows, then columns: (2r + 1) taps each instead of (2r + 1)^2), Gaussian
-// in pixels (sigma = r / 2, r the pixel's radius: R, or (d)'s own), each tap kept only on the same surface as the centre pixel: the same
-// kind (floor or occluder), normals within 18 degrees, and the tap's point within 1% of the
-// centre's distance from its tangent plane; and as above, the same material, roughness or
-// neither (same_as). No pass crosses the box's edges or the silhouettes; (e)'s passes do not
-// cross an edge between tiles of different materials (tiles of one material meet at corners
-// only). Measured on the default run of an earlier commit (R = 4, no LTC correction), (d) with
-// material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at K = 1 / 4 / 16 against
-// 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by default per pixel, in
-// [1, R], from the penumbra's width there (penumbra_radii; --filter-radius fixed: R everywhere,
-// the earlier images byte for byte). Cost per shaded pixel: one filter of
-// 2 (2R + 1) taps for (d), each tap's surface tested once for its 4 specular values (2 with
-// --ltc-correction off; taps of the centre's roughness) and its 2 diffuse ones (any material),
-// and one of 2 (2R + 1) taps of 3 values for (e); with the penumbra's radii, a filter of 2 values
-// more (the blocker distances) and a closest-hit query for each occluded shadow ray of (d); timed
-// with the shading (measure.hpp).
+// The filter: separable (rows, then columns: (2r + 1) taps each instead of (2r + 1)^2), Gaussian in
+// pixels (sigma = r / 2, r the pixel's radius: R, or (d)'s own), each tap kept only on the same
+// surface as the centre pixel: the same kind (floor or occluder), normals within 18 degrees, and
+// the tap's point within 1% of the centre's distance from its tangent plane; and as above, the same
+// material, roughness or neither (same_as). No pass crosses the box's edges or the silhouettes;
+// (e)'s passes do not cross an edge between tiles of different materials (tiles of one material
+// meet at corners only). Measured on the default run of an earlier commit (R = 4, no LTC
+// correction), (d) with material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at
+// K = 1 / 4 / 16 against 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by default
+// per pixel, in [1, R], from the penumbra's width there (penumbra_radii; --filter-radius fixed: R
+// everywhere, the earlier images byte for byte). Cost per shaded pixel: one filter of 2 (2R + 1)
+// taps for (d), each tap's surface tested once for its 4 specular values (2 with --ltc-correction
+// off; taps of the centre's roughness) and its 2 diffuse ones (any material), and one of 2 (2R + 1)
+// taps of 3 values for (e); with the penumbra's radii, a filter of 2 values more (the blocker
+// distances) and a closest-hit query for each occluded shadow ray of (d); timed with the shading
+// (measure.hpp).
 #pragma once
 
 #include "camera.hpp"

@@ -50,8 +50,9 @@
 //                    everywhere ((c) records no blockers): the same denoiser on plain Monte
 //                    Carlo, so that (d) is compared with a denoised baseline too.
 //                    The filter (denoise.hpp): cross-bilateral, separable, Gaussian of sigma r / 2
-//                    pixels, r = R or (d)'s own radius (--denoise-radius R; by default R = 4 (K / 4)^(-1/6) rounded, K the
-//                    samples or iterations: denoise.hpp's auto_radius), on the centre pixel's surface only
+//                    pixels, r = R or (d)'s own radius (--denoise-radius R; by default R =
+//                    4 (K / 4)^(-1/6) rounded, K the samples or iterations: denoise.hpp's
+//                    auto_radius), on the centre pixel's surface only
 //                    (kind, normal, plane), timed with the shading; (e)'s taps of the centre's
 //                    material, (d)'s diffuse sums shared across materials and its specular sums
 //                    between tiles of one roughness (their f carries no albedo or Fresnel term).
@@ -73,11 +74,11 @@
 // "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
 // (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
 // shadow and K BRDF rays (the tables' rays/px; (d) with --filter-radius penumbra also queries each
-// occluded shadow ray's closest hit, not counted there, timed). The reference is (c) at --reference-spp iterations with its own seeds:
-// direct lighting only, since the light is the only emitter and the floor's inter-reflection is
-// not what the methods compute. It is the direct light of the real BRDF, so the errors of (a),
-// (a+), (b) and (d) with --ltc-correction off include the LTC fit's as well as their shadows'
-// ((d) corrects it by default).
+// occluded shadow ray's closest hit, not counted there, timed). The reference is (c) at
+// --reference-spp iterations with its own seeds: direct lighting only, since the light is the only
+// emitter and the floor's inter-reflection is not what the methods compute. It is the direct light
+// of the real BRDF, so the errors of (a), (a+), (b) and (d) with --ltc-correction off include the
+// LTC fit's as well as their shadows' ((d) corrects it by default).
 // (a+)'s average rather than the K-sample result alone: it uses all K0 + K rays paid for, and it
 // scales the early stop's bias by K / (K0 + K). Measured in a default run with random rotations
 // (the K-sample result alone, in brackets): mean |e| over the floor 11.5% (14.3%) at K = 4,

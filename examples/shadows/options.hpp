@@ -25,7 +25,7 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<int> denoised_mis_spp{1, 2, 4, 8, 16, 32, 64, 128, 256};  // (e): iterations
     // (d) and (e): the filter's half-width in pixels (-1: auto_radius(K)); (d): the specular term's
     // LTC error corrected too (ltc::corrected_specular), and each pixel's radius from the
-    // penumbra's width (denoise.hpp: filter_settings)
+    // penumbra's width (filter_settings.hpp)
     filter_settings filter;
     bool screen_points = true;   // every method but (c) and the reference: screen-ordered points (screen_order.hpp)
     int reference_spp = 4096;  // (c)'s iterations for the reference
@@ -74,8 +74,8 @@ inline void print_help(const char* argv0) {
         "                      default): R = 4 (K / 4)^(-1/6) rounded, K the samples or iterations\n"
         "                      (5 at K = 1, 4 at 2-8, 3 at 16-64, 2 at 128-256)\n"
         "  --filter-radius penumbra|fixed\n"
-        "                      (d)'s radius per pixel: by default at most R and half the penumbra's\n"
-        "                      width there (in pixels), from the blocker distances of the occluded\n"
+        "                      (d)'s radius per pixel: by default about half the penumbra's width\n"
+        "                      there (in pixels), in [1, R], from the blocker distances of the occluded\n"
         "                      shadow rays of the pixel and its neighbours (percentage-closer soft\n"
         "                      shadows' estimate), so that hard shadow edges stay sharp; or R everywhere\n"
         "  --ltc-correction on|off\n"
