@@ -26,14 +26,14 @@
 // (e)'s passes do not cross an edge between tiles of different materials (tiles of one material
 // meet at corners only). Measured on the default run of an earlier commit (R = 4, no LTC
 // correction), (d) with material-only taps as (e) instead: mean error 8.0 / 5.1 / 4.2% at
-// K = 1 / 4 / 16 against 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by default
-// per pixel, in [1, R], from the penumbra's width there (penumbra_radii; --filter-radius fixed: R
-// everywhere, the earlier images byte for byte). Cost per shaded pixel: one filter of 2 (2R + 1)
-// taps for (d), each tap's surface tested once for its 4 specular values (2 with --ltc-correction
-// off; taps of the centre's roughness) and its 2 diffuse ones (any material), and one of 2 (2R + 1)
-// taps of 3 values for (e); with the penumbra's radii, a filter of 2 values more (the blocker
-// distances) and a closest-hit query for each occluded shadow ray of (d); timed with the shading
-// (measure.hpp).
+// K = 1 / 4 / 16 against 7.6 / 4.9 / 3.9%. R: --denoise-radius, or auto_radius(K); (d)'s radius by
+// default per pixel, in [1, R], from the penumbra's width there (penumbra_radii; --filter-radius
+// fixed: R everywhere, the earlier images byte for byte). Cost per shaded pixel: one filter of
+// 2 (2R + 1) taps for (d), each tap's surface tested once for its 4 specular values (2 with
+// --ltc-correction off; taps of the centre's roughness) and its 2 diffuse ones (any material), and
+// one of 2 (2R + 1) taps of 3 values for (e); with the penumbra's radii, a filter of 2 values more
+// (the blocker distances), and (d)'s shadow rays are closest-hit queries instead of any-hit ones;
+// timed with the shading (measure.hpp).
 #pragma once
 
 #include "camera.hpp"
@@ -253,7 +253,7 @@ std::vector<std::array<double, NS + 2>> filter_estimates(const std::vector<filte
 inline void denoise_ratio(const std::vector<pixel_hit>& hits, const scene& s, int W, int H, int radius,
                           const filter_settings& filter, unsigned threads, std::vector<shaded_pixel>& px) {
     const std::vector<filter_pixel> pixels = filter_pixels(hits, s);
-    const bool correct = filter.ltc_correction, penumbra = filter.penumbra && radius > 0;
+    const bool correct = filter.ltc_correction, penumbra = filter.penumbra_at(radius);
     pixel_radii radii;
     if (penumbra) radii = penumbra_radii(pixels, px, s, W, H, radius, threads);
     const pixel_radii* own = penumbra ? &radii : nullptr;

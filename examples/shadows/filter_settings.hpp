@@ -10,6 +10,10 @@ struct filter_settings {
     int radius = -1;
     bool ltc_correction = true;
     bool penumbra = true;
+
+    /// Whether (d) records blockers and takes the penumbra's radii at the resolved radius R: only
+    /// where there is a filter (R >= 1).
+    bool penumbra_at(int radius) const { return penumbra && radius > 0; }
 };
 
 }  // namespace shadows

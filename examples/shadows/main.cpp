@@ -73,8 +73,8 @@
 // first, or only, LTC; (c), (e) and the reference do not change.
 // "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
 // (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
-// shadow and K BRDF rays (the tables' rays/px; (d) with --filter-radius penumbra also queries each
-// occluded shadow ray's closest hit, not counted there, timed). The reference is (c) at
+// shadow and K BRDF rays (the tables' rays/px; (d) with --filter-radius penumbra traces its shadow
+// rays as closest-hit queries, for the blockers' distances; timed). The reference is (c) at
 // --reference-spp iterations with its own seeds: direct lighting only, since the light is the only
 // emitter and the floor's inter-reflection is not what the methods compute. It is the direct light
 // of the real BRDF, so the errors of (a), (a+), (b) and (d) with --ltc-correction off include the

@@ -64,7 +64,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                              : which == method::mis_denoised                                          ? method::mis
                                                                                                       : which;
     const int radius = filter.radius >= 0 ? filter.radius : auto_radius(spp);
-    const bool penumbra = filter.penumbra && radius > 0;  // (d) records its blockers for penumbra_radii
+    const bool penumbra = filter.penumbra_at(radius);  // (d) records its blockers for penumbra_radii
     const std::uint64_t run =
         mix_seed(mix_seed(seed, static_cast<std::uint64_t>(seeded_as)), static_cast<std::uint64_t>(spp));
     std::vector<shaded_pixel> px(count);

@@ -5,7 +5,7 @@
 // Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
 // per term (specular, diffuse); (d) keeps (a)'s estimates for its filter (each term's two sums
 // and analytic value, and the specular term's for Schlick's part; with --filter-radius penumbra,
-// its occluded samples' blocker distances: tracer::blocker_distance).
+// its occluded samples' blocker distances: tracer::light_visible's `blocker`).
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
 //        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~8x more per sample) in
@@ -21,8 +21,8 @@
 // shadow_options::stratified_rotation: neighbouring pixels' lattices stratified together;
 // screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
 // Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp); for (d) with
-// --filter-radius penumbra, each occluded one's blocker by a closest-hit query
-// (tracer::blocker_distance).
+// --filter-radius penumbra, closest-hit queries that also give each occluded ray's blocker
+// (tracer::light_visible's `blocker`).
 #pragma once
 
 #include "camera.hpp"
@@ -95,14 +95,12 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
     options.lobes = lobes;
     const vec3 N = h.n;
     const auto visible = [&tr, N, blockers](const vec3& origin, const vec3& unit_direction, float distance) {
-        const bool seen = tr.light_visible(origin, N, unit_direction, distance);
-        if (!seen && blockers != nullptr) {  // the blocker's distance: a second query, occluded rays only
+        float t_b = 0;  // the blocker's distance: one closest-hit query instead of the any-hit one
+        const bool seen = tr.light_visible(origin, N, unit_direction, distance, blockers ? &t_b : nullptr);
+        if (!seen && blockers != nullptr) {
             // t_b <= distance - light_margin (the query's range), so the division is by >= 1e-3.
-            const float t_b = tr.blocker_distance(origin, N, unit_direction, distance);
-            if (t_b > 0) {
-                blockers->ratio_sum += static_cast<double>(t_b) / static_cast<double>(distance - t_b);
-                ++blockers->samples;
-            }
+            blockers->ratio_sum += static_cast<double>(t_b) / static_cast<double>(distance - t_b);
+            ++blockers->samples;
         }
         return seen;
     };

@@ -1,7 +1,7 @@
 // shadows/tracer.hpp -- the scene in Embree 3: the floor, the occluders and the light, each a
-// triangle geometry of one RTCScene; closest hits (camera rays, BRDF-sampled rays, the blockers of
-// (d)'s occluded shadow rays) by rtcIntersect1 and shadow rays by rtcOccluded1, with the ray
-// offsets of the file comment below.
+// triangle geometry of one RTCScene; closest hits (camera rays, BRDF-sampled rays, the shadow rays
+// of (d) whose blockers it records) by rtcIntersect1 and the other shadow rays by rtcOccluded1,
+// with the ray offsets of the file comment below.
 //
 // Offsets. Scene coordinates are at most ~10 units, so a hit point org + t dir carries a float
 // rounding error of about 10 * 2^-24 ~ 1e-6 units. Rays leave a surface from P + surface_offset N
@@ -95,19 +95,19 @@ class tracer {
     }
 
     /// The shadow ray of the LTC methods: from P (offset along N, the normal facing the light's
-    /// side) along the unit direction, stopping light_margin before the light's plane.
-    bool light_visible(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
+    /// side) along the unit direction, stopping light_margin before the light's plane. With
+    /// `blocker`, one closest-hit query instead of the any-hit one, and where the ray is occluded
+    /// the first occluder's distance from the offset origin in *blocker.
+    bool light_visible(const vec3& P, const vec3& N, const vec3& unit_direction, float distance,
+                       float* blocker = nullptr) const {
         const float tfar = distance - light_margin;
-        return tfar <= 0 || unoccluded(P + surface_offset * N, unit_direction, tfar);
-    }
-
-    /// The distance from P (offset as light_visible's ray) to the first occluder along the unit
-    /// direction within light_visible's range, or 0 where nothing is hit.
-    float blocker_distance(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
-        const float tfar = distance - light_margin;
-        if (tfar <= 0) return 0.0f;
-        const ray_hit h = intersect(P + surface_offset * N, unit_direction, tfar);
-        return h.kind == ray_hit::none ? 0.0f : h.t;
+        if (tfar <= 0) return true;
+        const vec3 origin = P + surface_offset * N;
+        if (blocker == nullptr) return unoccluded(origin, unit_direction, tfar);
+        const ray_hit h = intersect(origin, unit_direction, tfar);
+        if (h.kind == ray_hit::none) return true;
+        *blocker = h.t;
+        return false;
     }
 
   private:
