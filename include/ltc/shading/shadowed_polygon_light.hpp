@@ -344,8 +344,10 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         // Where the light holds at least 1/8 of the lobe, the restricted LTC by rejection: draws
         // of the whole LTC (Algorithm 1), those that hit the light kept (no query for the others).
         const bool reject = ks > 0 && i_d >= options.rejection_from && i_d > T(0);
+        // At most 8 K_s draws, capped before the conversion: K_s / I_D overflows an integer
+        // where I_D is tiny (options.rejection_from = 0; found by the fuzzer).
         const std::size_t draws =
-            reject ? glm::min(8 * ks, static_cast<std::size_t>(std::ceil(T(ks) / i_d))) : ks;
+            reject ? static_cast<std::size_t>(std::ceil(glm::min(T(8 * ks), T(ks) / i_d))) : ks;
         ltc_polygon_sampler<T, max_vertices> lobe_sampler;
         projected_polygon_sampler<T, max_vertices> cosine_sampler;
         if (ks > 0 && !reject) lobe_sampler = ltc_polygon_sampler<T, max_vertices>(d, local, n);
