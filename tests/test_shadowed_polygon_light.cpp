@@ -44,6 +44,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -433,5 +434,92 @@ TEST_CASE("shadowed polygon light: a half-space occluder against closed forms an
                 check_sums(few.data());
             }
         }
+    }
+}
+
+TEST_CASE("shadowed polygon light: blocker distances from a first-hit callback", "[shadows]") {
+    // A light parallel to the floor at height H above the point, and an occluder in the plane
+    // z = h that covers x < edge: along every ray from P the distances to the occluder's plane and
+    // to the light's are h / d.z and H / d.z, so every occluded sample's t_b / (t_l - t_b) is
+    // h / (H - h), whatever its direction.
+    const float H = 2.0f, h = 0.8f, edge = 0.1f;
+    const glm::vec3 P(0.0f), N(0, 0, 1), V = glm::normalize(glm::vec3(0.3f, -0.2f, 1.0f));
+    const glm::vec3 light[4] = {{-1, -0.5f, H}, {1, -0.5f, H}, {1, 0.5f, H}, {-1, 0.5f, H}};  // faces down
+    int occluded_queries = 0;
+    const auto first_hit = [&](const glm::vec3& o, const glm::vec3& d, float distance) {
+        const float t = (h - o.z) / d.z;
+        const bool hit = d.z > 0 && t < distance && o.x + t * d.x < edge;
+        if (hit) ++occluded_queries;
+        return hit ? t : std::numeric_limits<float>::infinity();
+    };
+    const auto visible = [&](const glm::vec3& o, const glm::vec3& d, float distance) {
+        return !(first_hit(o, d, distance) < distance);
+    };
+    const auto run = [&](const auto& callback, const ltc::shadow_options<float>& o) {
+        return ltc::shade_polygon_light_shadowed(P, N, V, 0.4f, glm::vec3(0.04f), kAlbedo, kRadiance, light, 4,
+                                                 ltc::sidedness::one_sided, callback, o);
+    };
+    const float eps = std::numeric_limits<float>::epsilon();
+    int tested = 0;  // (plan, K) pairs with an occluded sample
+    for (int plan = 0; plan < kPlans; ++plan) {
+        for (std::size_t K : {1u, 4u, 16u}) {
+            ltc::shadow_options<float> o = plan_options(plan);
+            o.samples = K;
+            o.rotation = glm::vec2(0.3f, 0.7f);
+            CAPTURE(plan, K);
+            occluded_queries = 0;
+            const auto b = run(visible, o);
+            occluded_queries = 0;
+            const auto r = run(first_hit, o);
+            // The same visibility, so the same result bit for bit; a boolean callback records no blockers.
+            CHECK(r.ratio.specular == b.ratio.specular);
+            CHECK(r.ratio.diffuse == b.ratio.diffuse);
+            CHECK(r.unbiased.specular == b.unbiased.specular);
+            CHECK(r.rays == b.rays);
+            CHECK(b.blockers.occluded == 0.0f);
+            CHECK(b.blockers.ratio_sum == 0.0f);
+            CHECK(r.blockers.occluded == float(occluded_queries));
+            REQUIRE(r.rays > 0);
+            if (occluded_queries == 0) continue;
+            ++tested;
+            // Each term h / (H - h) up to ~12 eps (t_b's division, the library's plane distance,
+            // amplified by H / (H - h) < 2 in the difference), the sum of `occluded` equal terms up
+            // to (occluded - 1) eps more; twice that.
+            const double want = double(h) / double(H - h);
+            const double mean = double(r.blockers.ratio_sum) / double(r.blockers.occluded);
+            CHECK(std::abs(mean - want) <= 2 * (12 + double(r.blockers.occluded)) * eps * want);
+            // Percentage-closer soft shadows' width, against the similar triangles it stands for:
+            // the floor points where the lines from the light's two edges across the occluder's
+            // edge (x = -1 and x = 1 at height H) through that edge (x = edge, height h) land.
+            const auto landing = [&](double x_light) { return x_light + (edge - x_light) * H / (H - h); };
+            const double width = landing(-1.0) - landing(1.0);
+            CHECK(std::abs(ltc::penumbra_width(2.0f, r.blockers) - width) <= 2 * (12 + double(K)) * eps * width);
+        }
+    }
+    CHECK(tested >= 2 * kPlans);
+    // No occluded sample: width 0. The answers at the edges of the contract: NaN and `distance`
+    // itself are unoccluded; 0, a negative distance and the float just short of the light are
+    // occluded, each with a finite, non-negative ratio.
+    CHECK(ltc::penumbra_width(1.0f, ltc::blocker_estimates<float>{}) == 0.0f);
+    for (int answer = 0; answer < 5; ++answer) {
+        const auto odd = [answer](const glm::vec3&, const glm::vec3&, float distance) {
+            switch (answer) {
+                case 0: return std::numeric_limits<float>::quiet_NaN();
+                case 1: return distance;
+                case 2: return 0.0f;
+                case 3: return -1.0f;
+                default: return std::nextafter(distance, 0.0f);
+            }
+        };
+        ltc::shadow_options<float> o;
+        o.samples = 8;
+        const auto r = run(odd, o);
+        CAPTURE(answer);
+        REQUIRE(r.rays > 0);
+        CHECK(r.blockers.occluded == (answer < 2 ? 0.0f : float(r.rays)));
+        CHECK(std::isfinite(r.blockers.ratio_sum));
+        CHECK(r.blockers.ratio_sum >= 0.0f);
+        CHECK((answer == 4) == (r.blockers.ratio_sum > 0.0f));
+        CHECK(std::isfinite(ltc::penumbra_width(1.0f, r.blockers)));
     }
 }

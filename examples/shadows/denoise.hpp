@@ -194,7 +194,8 @@ inline double pixel_footprint(const ltc_examples::pinhole& camera, const vec3& e
 /// (d) with --filter-radius penumbra: each pixel's radius from the width of the penumbra there,
 /// as percentage-closer soft shadows estimate it (Fernando, "Percentage-Closer Soft Shadows",
 /// SIGGRAPH 2005 sketch): a blocker at t_b from the point, towards a light of extent w_l at t_l,
-/// casts a penumbra about w_l t_b / (t_l - t_b) wide. t_b / (t_l - t_b) is averaged over the
+/// casts a penumbra about w_l t_b / (t_l - t_b) wide (ltc::penumbra_width). t_b / (t_l - t_b),
+/// which the library sums per pixel (the result's `blockers`), is averaged over the
 /// occluded samples of the pixel and of its neighbours on its surface (the filter of radius R,
 /// weighted by their counts: a lit pixel next to a penumbra takes its neighbours'). w_l is an
 /// isotropic proxy, sqrt(area), for a light whose extent depends on the direction across the
@@ -208,7 +209,7 @@ inline pixel_radii penumbra_radii(const std::vector<filter_pixel>& pixels, const
                                   const scene& s, int W, int H, int radius, unsigned threads) {
     std::vector<std::array<double, 2>> v(px.size());
     for (std::size_t i = 0; i < px.size(); ++i)
-        v[i] = {px[i].blockers.ratio_sum, static_cast<double>(px[i].blockers.samples)};
+        v[i] = {px[i].blockers.ratio_sum, px[i].blockers.occluded};
     v = cross_bilateral<2, 2>(pixels, same_as::geometry, same_as::geometry, W, H, radius, threads, std::move(v));
     const double light_extent = std::sqrt(static_cast<double>(s.light_area()));
     const ltc_examples::pinhole camera(s.eye, s.target, s.vfov_deg, W, H);
@@ -223,7 +224,7 @@ inline pixel_radii penumbra_radii(const std::vector<filter_pixel>& pixels, const
             r.x[i] = r.y[i] = static_cast<std::uint8_t>(radius);
             continue;
         }
-        const double penumbra = light_extent * v[i][0] / v[i][1];
+        const double penumbra = ltc::penumbra_width(light_extent, ltc::blocker_estimates<double>{v[i][0], v[i][1]});
         r.x[i] = clamped(penumbra / pixel_footprint(camera, s.eye, h.p, h.n, -h.v, camera.right()));
         r.y[i] = clamped(penumbra / pixel_footprint(camera, s.eye, h.p, h.n, -h.v, camera.up()));
     }

@@ -40,13 +40,6 @@ inline float uniform_float(ltc::ground_truth::splitmix64& rng) {
     return static_cast<float>(rng.next() >> 40) * 0x1.0p-24f;
 }
 
-/// Over the occluded samples of a pixel, the sum of t_b / (t_l - t_b) (t_b the blocker's
-/// distance along the shadow ray, t_l the light point's) and their number.
-struct blocker_stats {
-    double ratio_sum = 0;
-    int samples = 0;
-};
-
 struct shaded_pixel {
     dvec3 radiance{0.0};
     double luminance_variance = 0;  // of the estimate (the mean over the iterations)
@@ -56,8 +49,9 @@ struct shaded_pixel {
     // (d)'s filter only: denoise.hpp).
     ltc::polygon_light_result<double> analytic;
     ltc::ratio_estimates<double> specular_estimates, diffuse_estimates, specular_fresnel_estimates;
-    // (d) with --filter-radius penumbra: its occluded samples' blockers (denoise.hpp's penumbra_radii).
-    blocker_stats blockers;
+    // (d) with --filter-radius penumbra: its occluded samples' blockers, the library's sums of
+    // t_b / (t_l - t_b) and their count (denoise.hpp's penumbra_radii).
+    ltc::blocker_estimates<double> blockers;
 };
 
 /// Radiance towards the camera at one pixel by `iterations` MIS iterations (file comment).

@@ -5,7 +5,7 @@
 // Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
 // per term (specular, diffuse); (d) keeps (a)'s estimates for its filter (each term's two sums
 // and analytic value, and the specular term's for Schlick's part; with --filter-radius penumbra,
-// its occluded samples' blocker distances: tracer::light_visible's `blocker`).
+// its occluded samples' blocker distances: the result's `blockers`, from a first-hit callback).
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
 //        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~8x more per sample) in
@@ -22,7 +22,7 @@
 // screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
 // Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp); for (d) with
 // --filter-radius penumbra, closest-hit queries that also give each occluded ray's blocker
-// (tracer::light_visible's `blocker`).
+// (tracer::first_occluder, the library's first-hit callback).
 #pragma once
 
 #include "camera.hpp"
@@ -81,7 +81,7 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
                                                                ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
                                                                ltc::ground_truth::splitmix64& rng,
                                                                const pixel_points* points = nullptr,
-                                                               blocker_stats* blockers = nullptr) {
+                                                               bool record_blockers = false) {
     const material& m = s.materials[static_cast<std::size_t>(h.material)];
     ltc::shadow_options<float> options;
     options.samples = static_cast<std::size_t>(K);
@@ -94,18 +94,19 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
     options.sampler = sampler;
     options.lobes = lobes;
     const vec3 N = h.n;
-    const auto visible = [&tr, N, blockers](const vec3& origin, const vec3& unit_direction, float distance) {
-        float t_b = 0;  // the blocker's distance: one closest-hit query instead of the any-hit one
-        const bool seen = tr.light_visible(origin, N, unit_direction, distance, blockers ? &t_b : nullptr);
-        if (!seen && blockers != nullptr) {
-            // t_b <= distance - light_margin (the query's range), so the division is by >= 1e-3.
-            blockers->ratio_sum += static_cast<double>(t_b) / static_cast<double>(distance - t_b);
-            ++blockers->samples;
-        }
-        return seen;
+    const auto shade_with = [&](const auto& callback) {
+        return ltc::shade_polygon_light_shadowed(h.p, h.n, h.v, m.roughness, m.f0, m.albedo, s.light_radiance,
+                                                 s.light_vertices, 4, ltc::sidedness::one_sided, callback, options);
     };
-    return ltc::shade_polygon_light_shadowed(h.p, h.n, h.v, m.roughness, m.f0, m.albedo, s.light_radiance,
-                                             s.light_vertices, 4, ltc::sidedness::one_sided, visible, options);
+    // Recording blockers: a first-hit callback (one closest-hit query per ray instead of an any-hit
+    // one), whose distances the library sums into the result's `blockers`.
+    if (record_blockers)
+        return shade_with([&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
+            return tr.first_occluder(origin, N, unit_direction, distance);
+        });
+    return shade_with([&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
+        return tr.light_visible(origin, N, unit_direction, distance);
+    });
 }
 
 /// Whether a term's ratio is exactly 0 or 1: its result is 0 or the unshadowed one. (A ratio
@@ -126,7 +127,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
     const ltc::shadowed_polygon_light_result<float> r =
-        shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points, record_blockers ? &out.blockers : nullptr);
+        shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points, record_blockers);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
@@ -136,6 +137,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     out.specular_estimates = to_double(r.specular_estimates);
     out.specular_fresnel_estimates = to_double(r.specular_fresnel_estimates);
     out.diffuse_estimates = to_double(r.diffuse_estimates);
+    out.blockers = {r.blockers.ratio_sum, r.blockers.occluded};
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;

@@ -1,6 +1,6 @@
 // shadows/tracer.hpp -- the scene in Embree 3: the floor, the occluders and the light, each a
 // triangle geometry of one RTCScene; closest hits (camera rays, BRDF-sampled rays, the shadow rays
-// of (d) whose blockers it records) by rtcIntersect1 and the other shadow rays by rtcOccluded1,
+// of (d) whose blockers it records: first_occluder) by rtcIntersect1 and the other shadow rays by rtcOccluded1,
 // with the ray offsets of the file comment below.
 //
 // Offsets. Scene coordinates are at most ~10 units, so a hit point org + t dir carries a float
@@ -95,19 +95,19 @@ class tracer {
     }
 
     /// The shadow ray of the LTC methods: from P (offset along N, the normal facing the light's
-    /// side) along the unit direction, stopping light_margin before the light's plane. With
-    /// `blocker`, one closest-hit query instead of the any-hit one, and where the ray is occluded
-    /// the first occluder's distance from the offset origin in *blocker.
-    bool light_visible(const vec3& P, const vec3& N, const vec3& unit_direction, float distance,
-                       float* blocker = nullptr) const {
+    /// side) along the unit direction, stopping light_margin before the light's plane.
+    bool light_visible(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
         const float tfar = distance - light_margin;
-        if (tfar <= 0) return true;
-        const vec3 origin = P + surface_offset * N;
-        if (blocker == nullptr) return unoccluded(origin, unit_direction, tfar);
-        const ray_hit h = intersect(origin, unit_direction, tfar);
-        if (h.kind == ray_hit::none) return true;
-        *blocker = h.t;
-        return false;
+        return tfar <= 0 || unoccluded(P + surface_offset * N, unit_direction, tfar);
+    }
+
+    /// The same ray as one closest-hit query: the first occluder's distance from the offset
+    /// origin, +inf where light_visible is true (the library's first-hit callback: a distance
+    /// below `distance` is an occluded sample).
+    float first_occluder(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
+        const float tfar = distance - light_margin;
+        const ray_hit h = tfar <= 0 ? ray_hit{} : intersect(P + surface_offset * N, unit_direction, tfar);
+        return h.kind == ray_hit::none ? std::numeric_limits<float>::infinity() : h.t;
     }
 
   private:

@@ -198,8 +198,25 @@ void run(FuzzedDataProvider& in) {
         o.rejection_from = T(2) * in.ConsumeProbability<T>();
         o.lobes = static_cast<ltc::analytic_lobes>(
             in.ConsumeIntegralInRange<int>(0, static_cast<int>(ltc::analytic_lobes::cosine_lobe)));
-        const auto r = ltc::shade_polygon_light_shadowed(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
-                                                         ltc::sidedness::one_sided, alternate, o);
+        // Or a first-hit callback: every other query unoccluded (+inf), the others an occluder at any
+        // multiple of the distance (negative, beyond the light, or overflowing to +inf included).
+        const bool first_hit = in.ConsumeBool();
+        const T hit_fraction = in.ConsumeFloatingPoint<T>();
+        const auto occluder_at = [&](const vec3&, const vec3&, T distance) {
+            return (queries++ & 1u) == 0 ? std::numeric_limits<T>::infinity() : distance * hit_fraction;
+        };
+        const auto shade = [&](const auto& callback) {
+            return ltc::shade_polygon_light_shadowed(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
+                                                     ltc::sidedness::one_sided, callback, o);
+        };
+        const auto r = first_hit ? shade(occluder_at) : shade(alternate);
+        require_finite(r.blockers.ratio_sum, "blockers' ratio sum");
+        require_finite(ltc::penumbra_width(T(1), r.blockers), "penumbra width");
+        if (!(r.blockers.ratio_sum >= T(0) && r.blockers.occluded <= T(r.rays) && (first_hit || r.blockers.occluded == T(0)))) {
+            std::fprintf(stderr, "blockers out of range: sum %g over %g occluded of %zu queries\n",
+                         static_cast<double>(r.blockers.ratio_sum), static_cast<double>(r.blockers.occluded), r.rays);
+            std::abort();
+        }
         for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {
             require_finite(t->specular, "shadowed specular");
             require_finite(t->diffuse, "shadowed diffuse");

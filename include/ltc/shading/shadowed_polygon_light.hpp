@@ -87,7 +87,14 @@
 //
 // Visibility callback: bool visible(origin, unit direction, distance), all world space, the
 // distance measured to the light's plane along the direction; offset origin and distance by the
-// renderer's own epsilon. The light: a convex planar polygon of at most 8 vertices.
+// renderer's own epsilon. Or, from a closest-hit query, T first_hit(origin, unit direction,
+// distance) (any floating-point return type): the distance t_b to the first occluder along the
+// direction, `distance` or more (+inf) where nothing occludes; the sample is occluded where
+// t_b < distance, and the result's `blockers` then sums t_b / (t_l - t_b) over the occluded
+// samples, t_l = distance: the estimate of a penumbra's width of percentage-closer soft shadows
+// (penumbra_width; Fernando, SIGGRAPH 2005), with which a renderer that filters the estimates
+// can narrow its filter where the penumbra is narrow (the shadows example's (d)). The light: a
+// convex planar polygon of at most 8 vertices.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -106,6 +113,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace ltc {
 
@@ -155,6 +163,28 @@ struct ratio_estimates {
     T analytic{0};  ///< the analytic part's value of what `total` estimates (the LTC's; exact for the diffuse term)
 };
 
+/// The occluded samples' blockers, from a first-hit visibility callback (file comment): over
+/// the samples whose query met an occluder at t_b < t_l (t_l the light's plane's distance along
+/// the ray), the sum of t_b / (t_l - t_b) and their number. Both are sums, so a renderer can
+/// filter them over neighbouring pixels (weighted: `occluded` need not stay an integer) before
+/// penumbra_width, as it filters ratio_estimates. 0 and 0 for a boolean callback.
+template <typename T>
+struct blocker_estimates {
+    T ratio_sum{0};  ///< sum over the occluded samples of t_b / (t_l - t_b)
+    T occluded{0};   ///< the occluded samples
+};
+
+/// Percentage-closer soft shadows' penumbra width (Fernando, "Percentage-Closer Soft Shadows",
+/// SIGGRAPH 2005 sketch, by similar triangles: an occluder edge at t_b from the point, towards a
+/// light of extent w_l across the edge at t_l, casts a penumbra w_l t_b / (t_l - t_b) wide on a
+/// receiver parallel to the light and the occluder), with t_b / (t_l - t_b) averaged over the
+/// occluded samples: light_extent times blockers.ratio_sum / blockers.occluded, in the units of
+/// light_extent; 0 where no sample was occluded.
+template <typename T>
+LTC_HOST_DEVICE inline T penumbra_width(T light_extent, const blocker_estimates<T>& blockers) {
+    return blockers.occluded > T(0) ? light_extent * (blockers.ratio_sum / blockers.occluded) : T(0);
+}
+
 template <typename T>
 struct shadowed_polygon_light_result {
     polygon_light_result<T> unshadowed;  ///< analytic LTC, no visibility
@@ -166,6 +196,8 @@ struct shadowed_polygon_light_result {
     /// The specular sums with f (1 - V.H)^5, Schlick's (1 - F0) part, its analytic value the
     /// tables' Fresnel channel times the LTC integral (for corrected_specular).
     ratio_estimates<T> specular_fresnel_estimates;
+    /// The occluded samples' blocker distances, with a first-hit callback (file comment).
+    blocker_estimates<T> blockers;
 };
 
 /// The ratio estimator's term from its analytic value and the two estimates of its visibility
@@ -307,6 +339,21 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const auto d = transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv);
     const T i_d = std::abs(I.ltc), e = pi<T>() * std::abs(I.form_factor);  // the two densities' normalizers
 
+    // The callback's answer: visible, or the first occluder's distance (file comment), which
+    // adds its PCSS ratio to the blockers where the sample is occluded.
+    const auto query = [&](const vec3& world, T distance) -> bool {
+        using answer = std::decay_t<decltype(visible(P, world, distance))>;
+        if constexpr (std::is_floating_point_v<answer>) {
+            const T t_b = static_cast<T>(visible(P, world, distance));
+            if (!(t_b < distance)) return true;  // nothing before the light (a NaN too)
+            const T t = glm::max(t_b, T(0));  // t < distance: the quotient is finite and >= 0
+            r.blockers.ratio_sum += t / (distance - t);
+            r.blockers.occluded += T(1);
+            return false;
+        } else {
+            return static_cast<bool>(visible(P, world, distance));
+        }
+    };
     // Each direction l (local) with its density under the whole sample plan, sum_k n_k p_k(l) (the
     // balance heuristic's denominator, Veach 1997 eq. 9.13), adds f / density to both terms.
     detail::ratio_sums<T> spec, diff, schlick;
@@ -314,7 +361,7 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
         // Below the surface both integrands are 0: no query (the sums would not change).
         if (!(density > T(0)) || !(l.z > T(0))) return;
         ++r.rays;
-        const bool seen = distance > T(0) && static_cast<bool>(visible(P, world, distance));
+        const bool seen = distance > T(0) && query(world, distance);
         const vec3 h = detail::safe_normalize(v_local + l);  // Schlick's factor at V.H
         const T m = T(1) - glm::clamp(glm::dot(v_local, h), T(0), T(1));
         const T m5 = m * m * m * m * m;
