@@ -1,7 +1,7 @@
 // shadows/tracer.hpp -- the scene in Embree 3: the floor, the occluders and the light, each a
 // triangle geometry of one RTCScene; closest hits (camera rays, BRDF-sampled rays, the shadow rays
-// of (d) whose blockers it records: first_occluder) by rtcIntersect1 and the other shadow rays by rtcOccluded1,
-// with the ray offsets of the file comment below.
+// of (d) whose blockers it records: first_occluder) by rtcIntersect1 and the other shadow rays by
+// rtcOccluded1, with the ray offsets of the file comment below.
 //
 // Offsets. Scene coordinates are at most ~10 units, so a hit point org + t dir carries a float
 // rounding error of about 10 * 2^-24 ~ 1e-6 units. Rays leave a surface from P + surface_offset N
