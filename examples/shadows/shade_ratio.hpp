@@ -5,7 +5,7 @@
 // Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
 // per term (specular, diffuse); (d) keeps (a)'s estimates for its filter (each term's two sums
 // and analytic value, and the specular term's for Schlick's part; with --filter-radius penumbra,
-// its occluded samples' blocker distances: the result's `blockers`, from a first-hit callback).
+// its occluded samples' blocker distances: the result's `blockers`, from an ltc::first_hit callback).
 //   (a)  the library's default plan: K samples in all, one shadow ray each, split between the LTC
 //        lobe restricted to the polygon (specular share) and the light's area (diffuse share; the
 //        exact cosine sampler, ltc::diffuse_sampler::cosine, costs ~8x more per sample) in
@@ -22,7 +22,7 @@
 // screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
 // Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp); for (d) with
 // --filter-radius penumbra, closest-hit queries that also give each occluded ray's blocker
-// (tracer::first_occluder, the library's first-hit callback).
+// (tracer::first_occluder, wrapped in ltc::first_hit).
 #pragma once
 
 #include "camera.hpp"
@@ -98,12 +98,12 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
         return ltc::shade_polygon_light_shadowed(h.p, h.n, h.v, m.roughness, m.f0, m.albedo, s.light_radiance,
                                                  s.light_vertices, 4, ltc::sidedness::one_sided, callback, options);
     };
-    // Recording blockers: a first-hit callback (one closest-hit query per ray instead of an any-hit
-    // one), whose distances the library sums into the result's `blockers`.
+    // Recording blockers: a first-hit callback (ltc::first_hit: one closest-hit query per ray instead
+    // of an any-hit one), whose distances the library sums into the result's `blockers`.
     if (record_blockers)
-        return shade_with([&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
+        return shade_with(ltc::first_hit([&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
             return tr.first_occluder(origin, N, unit_direction, distance);
-        });
+        }));
     return shade_with([&tr, N](const vec3& origin, const vec3& unit_direction, float distance) {
         return tr.light_visible(origin, N, unit_direction, distance);
     });

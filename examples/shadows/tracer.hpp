@@ -97,20 +97,28 @@ class tracer {
     /// The shadow ray of the LTC methods: from P (offset along N, the normal facing the light's
     /// side) along the unit direction, stopping light_margin before the light's plane.
     bool light_visible(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
-        const float tfar = distance - light_margin;
-        return tfar <= 0 || unoccluded(P + surface_offset * N, unit_direction, tfar);
+        const shadow_ray r(P, N, distance);
+        return r.tfar <= 0 || unoccluded(r.origin, unit_direction, r.tfar);
     }
 
     /// The same ray as one closest-hit query: the first occluder's distance from the offset
-    /// origin, +inf where light_visible is true (the library's first-hit callback: a distance
-    /// below `distance` is an occluded sample).
+    /// origin, +inf where light_visible is true (for ltc::first_hit: a distance below `distance`
+    /// is an occluded sample).
     float first_occluder(const vec3& P, const vec3& N, const vec3& unit_direction, float distance) const {
-        const float tfar = distance - light_margin;
-        const ray_hit h = tfar <= 0 ? ray_hit{} : intersect(P + surface_offset * N, unit_direction, tfar);
+        const shadow_ray r(P, N, distance);
+        const ray_hit h = r.tfar <= 0 ? ray_hit{} : intersect(r.origin, unit_direction, r.tfar);
         return h.kind == ray_hit::none ? std::numeric_limits<float>::infinity() : h.t;
     }
 
   private:
+    /// A shadow ray's offset origin and range (the file comment's offsets); tfar <= 0: none.
+    struct shadow_ray {
+        shadow_ray(const vec3& P, const vec3& N, float distance)
+            : origin(P + surface_offset * N), tfar(distance - light_margin) {}
+        vec3 origin;
+        float tfar;
+    };
+
     unsigned attach(const mesh& m) {
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,

@@ -209,7 +209,7 @@ void run(FuzzedDataProvider& in) {
             return ltc::shade_polygon_light_shadowed(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
                                                      ltc::sidedness::one_sided, callback, o);
         };
-        const auto r = first_hit ? shade(occluder_at) : shade(alternate);
+        const auto r = first_hit ? shade(ltc::first_hit(occluder_at)) : shade(alternate);
         require_finite(r.blockers.ratio_sum, "blockers' ratio sum");
         require_finite(ltc::penumbra_width(T(1), r.blockers), "penumbra width");
         if (!(r.blockers.ratio_sum >= T(0) && r.blockers.occluded <= T(r.rays) && (first_hit || r.blockers.occluded == T(0)))) {

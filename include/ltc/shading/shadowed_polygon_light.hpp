@@ -87,13 +87,15 @@
 //
 // Visibility callback: bool visible(origin, unit direction, distance), all world space, the
 // distance measured to the light's plane along the direction; offset origin and distance by the
-// renderer's own epsilon. Or, from a closest-hit query, T first_hit(origin, unit direction,
-// distance) (any floating-point return type): the distance t_b to the first occluder along the
-// direction, `distance` or more (+inf) where nothing occludes; the sample is occluded where
-// t_b < distance, and the result's `blockers` then sums t_b / (t_l - t_b) over the occluded
-// samples, t_l = distance: the estimate of a penumbra's width of percentage-closer soft shadows
-// (penumbra_width; Fernando, SIGGRAPH 2005), with which a renderer that filters the estimates
-// can narrow its filter where the penumbra is narrow (the shadows example's (d)). The light: a
+// renderer's own epsilon; its answer is converted to bool. Or, from a closest-hit query,
+// ltc::first_hit(callback), callback returning the distance t_b to the first occluder along the
+// direction (a floating-point value; `distance` or more, or +inf, where nothing occludes): the
+// sample is occluded where t_b < distance (a NaN is not; a negative t_b counts as 0), and the
+// result's `blockers` then sums t_b / (t_l - t_b) over the occluded samples, t_l = distance: the
+// estimate of a penumbra's width of percentage-closer soft shadows (penumbra_width; Fernando,
+// SIGGRAPH 2005), with which a renderer that filters the estimates can narrow its filter where
+// the penumbra is narrow (the shadows example's (d)). The wrapper makes the distance explicit: a
+// callback that returns a float visibility or transmittance stays a boolean one. The light: a
 // convex planar polygon of at most 8 vertices.
 #pragma once
 
@@ -114,6 +116,7 @@
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 namespace ltc {
 
@@ -173,6 +176,32 @@ struct blocker_estimates {
     T ratio_sum{0};  ///< sum over the occluded samples of t_b / (t_l - t_b)
     T occluded{0};   ///< the occluded samples
 };
+
+/// A visibility callback that answers with the first occluder's distance (file comment): what
+/// ltc::first_hit wraps. Calls the callback as it is.
+template <typename F>
+struct first_hit_callback {
+    F callback;
+    template <typename... A>
+    LTC_HOST_DEVICE auto operator()(A&&... a) const -> decltype(callback(std::forward<A>(a)...)) {
+        return callback(std::forward<A>(a)...);
+    }
+};
+
+/// Marks `callback(origin, unit direction, distance)` as returning the first occluder's distance
+/// along the ray (+inf where none) instead of a visibility: shade_polygon_light_shadowed then
+/// records the occluded samples' blockers (blocker_estimates).
+template <typename F>
+LTC_HOST_DEVICE inline first_hit_callback<std::decay_t<F>> first_hit(F&& callback) {
+    return {std::forward<F>(callback)};
+}
+
+namespace detail {
+template <typename F>
+struct is_first_hit : std::false_type {};
+template <typename F>
+struct is_first_hit<first_hit_callback<F>> : std::true_type {};
+}  // namespace detail
 
 /// Percentage-closer soft shadows' penumbra width (Fernando, "Percentage-Closer Soft Shadows",
 /// SIGGRAPH 2005 sketch, by similar triangles: an occluder edge at t_b from the point, towards a
@@ -339,11 +368,12 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const auto d = transformed<clamped_cosine<T>>::from_inverse(lobe.m_inv);
     const T i_d = std::abs(I.ltc), e = pi<T>() * std::abs(I.form_factor);  // the two densities' normalizers
 
-    // The callback's answer: visible, or the first occluder's distance (file comment), which
-    // adds its PCSS ratio to the blockers where the sample is occluded.
+    // The callback's answer: visible, or with ltc::first_hit the first occluder's distance (file
+    // comment), which adds its PCSS ratio to the blockers where the sample is occluded.
     const auto query = [&](const vec3& world, T distance) -> bool {
-        using answer = std::decay_t<decltype(visible(P, world, distance))>;
-        if constexpr (std::is_floating_point_v<answer>) {
+        if constexpr (detail::is_first_hit<std::decay_t<Visible>>::value) {
+            static_assert(std::is_floating_point_v<std::decay_t<decltype(visible(P, world, distance))>>,
+                          "ltc::first_hit: the callback returns the first occluder's distance, a floating-point value");
             const T t_b = static_cast<T>(visible(P, world, distance));
             if (!(t_b < distance)) return true;  // nothing before the light (a NaN too)
             const T t = glm::max(t_b, T(0));  // t < distance: the quotient is finite and >= 0
