@@ -505,6 +505,21 @@ TEST_CASE("shadowed polygon light: blocker distances from a first-hit callback",
         CHECK(r.ratio.diffuse == r.unshadowed.diffuse);
         CHECK(r.blockers.occluded == 0.0f);
     }
+    // A mutable callback (one with its own state, as a renderer's ray counter) wraps as it is
+    // called unwrapped: one call per query.
+    {
+        int calls = 0;
+        auto counting = [calls_ptr = &calls, n = 0](const glm::vec3&, const glm::vec3&, float) mutable {
+            *calls_ptr = ++n;
+            return std::numeric_limits<float>::infinity();
+        };
+        const auto r = ltc::shade_polygon_light_shadowed(P, N, V, 0.4f, glm::vec3(0.04f), kAlbedo, kRadiance, light, 4,
+                                                         ltc::sidedness::one_sided, ltc::first_hit(counting),
+                                                         ltc::shadow_options<float>{});
+        CHECK(calls == int(r.rays));
+        CHECK(r.rays > 0);
+        CHECK(r.ratio.diffuse == r.unshadowed.diffuse);
+    }
     // No occluded sample: width 0. The answers at the edges of the contract: NaN and `distance`
     // itself are unoccluded; 0, a negative distance and the float just short of the light are
     // occluded, each with a finite, non-negative ratio.

@@ -178,12 +178,17 @@ struct blocker_estimates {
 };
 
 /// A visibility callback that answers with the first occluder's distance (file comment): what
-/// ltc::first_hit wraps. Calls the callback as it is.
+/// ltc::first_hit wraps. Calls the callback as it is, const or not (a mutable lambda, as an
+/// unwrapped callback may be).
 template <typename F>
 struct first_hit_callback {
     F callback;
     template <typename... A>
-    LTC_HOST_DEVICE auto operator()(A&&... a) const -> decltype(callback(std::forward<A>(a)...)) {
+    LTC_HOST_DEVICE auto operator()(A&&... a) -> decltype(callback(std::forward<A>(a)...)) {
+        return callback(std::forward<A>(a)...);
+    }
+    template <typename... A>
+    LTC_HOST_DEVICE auto operator()(A&&... a) const -> decltype(static_cast<const F&>(callback)(std::forward<A>(a)...)) {
         return callback(std::forward<A>(a)...);
     }
 };
