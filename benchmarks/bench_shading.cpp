@@ -199,8 +199,9 @@ void BM_batch_shading(benchmark::State& state) {
 
 // The opt-in batches, throughput only, as BM_library_scalar_opt_in: Cosine false, the two-lobe
 // batch (ltc/shading/batch_two_lobe.hpp); true, the batch of an LTC and the cosine
-// (ltc/shading/batch_cosine_lobe.hpp).
-template <bool Cosine>
+// (ltc/shading/batch_cosine_lobe.hpp), also with each instruction set pinned, against the
+// one-lobe BM_batch_shading<isa> rows (issue 16's goal: at most 1.2x the one-lobe cost).
+template <bool Cosine, ltc::batch::isa Which = ltc::batch::isa::automatic>
 void BM_batch_shading_opt_in(benchmark::State& state) {
     const scene& s = the_scene();
     const auto points = s.points();
@@ -209,10 +210,10 @@ void BM_batch_shading_opt_in(benchmark::State& state) {
     for (auto _ : state) {
         if (Cosine)
             ltc::batch::shade_polygon_light_cosine_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results,
-                                                        kItems);
+                                                        kItems, Which);
         else
             ltc::batch::shade_polygon_light_two_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results,
-                                                     kItems);
+                                                     kItems, Which);
         benchmark::DoNotOptimize(out.c[0].data());
         benchmark::ClobberMemory();
     }
@@ -272,6 +273,9 @@ BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx512);
 BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, false)->Name("BM_batch_shading_two_lobe");
 BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, true)->Name("BM_batch_shading_cosine_lobe");
+BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, true, isa::baseline)->Name("BM_batch_shading_cosine_lobe<isa::baseline>");
+BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, true, isa::avx2)->Name("BM_batch_shading_cosine_lobe<isa::avx2>");
+BENCHMARK_TEMPLATE(BM_batch_shading_opt_in, true, isa::avx512)->Name("BM_batch_shading_cosine_lobe<isa::avx512>");
 BENCHMARK_TEMPLATE(BM_batch_quad_lights, 1);
 BENCHMARK_TEMPLATE(BM_batch_quad_lights, 2);
 BENCHMARK_TEMPLATE(BM_batch_quad_lights, 3);

@@ -259,3 +259,88 @@ TEST_CASE("batch instruction sets: resolve falls back to the widest available on
         CHECK(ltc::batch::lane_count<double>(i) == std::max<std::size_t>(widths[k] / 2, 1));
     }
 }
+
+#if LTC_SIMD
+namespace {
+
+// simd::<isa>::gather through a function compiled for that instruction set (the primitives are
+// always inlined, so their caller must carry the same target; arrays in and out, since a vector
+// passed to a function of another target changes the ABI): out[k] = base[index[k]], widened to T.
+template <typename T, std::size_t Bytes>
+struct gather_lanes {
+    using types = ltc::simd::vector_types<T, Bytes>;
+    using vf = typename types::vf;
+    using vi = typename types::vi;
+    static constexpr std::size_t width = types::width;
+};
+
+template <typename T>
+void gather_baseline(const float* base, const int* index, T* out) {
+    using L = gather_lanes<T, 16>;
+    typename L::vi idx{};
+    for (std::size_t k = 0; k < L::width; ++k) idx[k] = index[k];
+    const typename L::vf v = ltc::simd::baseline::gather<typename L::vf>(base, idx);
+    for (std::size_t k = 0; k < L::width; ++k) out[k] = v[k];
+}
+#if LTC_SIMD_AVX2
+template <typename T>
+LTC_SIMD_AVX2_TARGET void gather_avx2(const float* base, const int* index, T* out) {
+    using L = gather_lanes<T, 32>;
+    typename L::vi idx{};
+    for (std::size_t k = 0; k < L::width; ++k) idx[k] = index[k];
+    const typename L::vf v = ltc::simd::avx2::gather<typename L::vf>(base, idx);
+    for (std::size_t k = 0; k < L::width; ++k) out[k] = v[k];
+}
+#endif
+#if LTC_SIMD_AVX512
+template <typename T>
+LTC_SIMD_AVX512_TARGET void gather_avx512(const float* base, const int* index, T* out) {
+    using L = gather_lanes<T, 64>;
+    typename L::vi idx{};
+    for (std::size_t k = 0; k < L::width; ++k) idx[k] = index[k];
+    const typename L::vf v = ltc::simd::avx512::gather<typename L::vf>(base, idx);
+    for (std::size_t k = 0; k < L::width; ++k) out[k] = v[k];
+}
+#endif
+
+template <typename T, std::size_t Bytes>
+void check_gather(const char* name, const std::vector<float>& table, const std::vector<int>& index) {
+    constexpr std::size_t width = ltc::simd::vector_types<T, Bytes>::width;
+    std::vector<T> got(width, T(1234));
+    if constexpr (Bytes == 16) gather_baseline<T>(table.data(), index.data(), got.data());
+#if LTC_SIMD_AVX2
+    if constexpr (Bytes == 32) gather_avx2<T>(table.data(), index.data(), got.data());
+#endif
+#if LTC_SIMD_AVX512
+    if constexpr (Bytes == 64) gather_avx512<T>(table.data(), index.data(), got.data());
+#endif
+    INFO(name << (std::is_same_v<T, float> ? " float" : " double"));
+    for (std::size_t k = 0; k < width; ++k) {  // exact, the sign of zero included
+        CHECK(got[k] == T(table[std::size_t(index[k])]));
+        CHECK(std::signbit(got[k]) == std::signbit(table[std::size_t(index[k])]));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("simd gather: lane k loads base[index[k]], widened exactly, on every instruction set", "[batch]") {
+    // Distinct values, a subnormal, a negative zero and the largest float among them; indices
+    // out of order, repeated, and at both ends of the array (the kernel's table fetch).
+    std::vector<float> table(97);
+    for (std::size_t i = 0; i < table.size(); ++i) table[i] = float(i) * 1.25f - 40.0f + 1.0f / float(i + 3);
+    table[5] = std::numeric_limits<float>::denorm_min();
+    table[6] = -0.0f;
+    table[96] = std::numeric_limits<float>::max();
+    const std::vector<int> index = {96, 0, 5, 6, 17, 17, 95, 1, 42, 96, 3, 60, 2, 88, 6, 0};
+    check_gather<float, 16>("baseline", table, index);
+    check_gather<double, 16>("baseline", table, index);
+    if (ltc::batch::available(ltc::batch::isa::avx2)) {
+        check_gather<float, 32>("avx2", table, index);
+        check_gather<double, 32>("avx2", table, index);
+    }
+    if (ltc::batch::available(ltc::batch::isa::avx512)) {
+        check_gather<float, 64>("avx512", table, index);
+        check_gather<double, 64>("avx512", table, index);
+    }
+}
+#endif

@@ -1,6 +1,6 @@
 // ltc/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
-// vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, bits), and the
-// run-time choice between instruction sets.
+// vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, bits, gather),
+// and the run-time choice between instruction sets.
 //
 // The layer is the compiler's own vector extension (GCC and Clang: `vector_size`), the one that
 // libstdc++'s <experimental/simd> is written in. Why not that, xsimd or Highway: the batch must
@@ -145,6 +145,15 @@ LTC_SIMD_BASELINE_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
+/// Lane k: base[index[k]], widened to the lane type of V (float or double); index has V's lanes.
+/// SSE2 and NEON have no gather instruction: one load per lane.
+template <typename V, typename VI>
+LTC_SIMD_BASELINE_FN V gather(const float* base, VI index) {
+    V r;
+    for (std::size_t k = 0; k < sizeof(V) / sizeof(r[0]); ++k) r[k] = base[index[k]];
+    return r;
+}
+
 }  // namespace baseline
 
 #if LTC_SIMD_AVX2
@@ -184,6 +193,19 @@ LTC_SIMD_AVX2_FN unsigned bits(VI m) {
 template <typename VI>
 LTC_SIMD_AVX2_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
+}
+
+/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened). The masked
+/// forms with a zero source: the unmasked ones leave GCC 12 warning of an uninitialized register.
+template <typename V, typename VI>
+LTC_SIMD_AVX2_FN V gather(const float* base, VI index) {
+    if constexpr (sizeof(V) / sizeof(index[0]) == 8) {
+        const __m256 all_lanes = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+        return (V)_mm256_mask_i32gather_ps(_mm256_setzero_ps(), base, (__m256i)index, all_lanes, 4);
+    } else {
+        const __m128 all_lanes = _mm_castsi128_ps(_mm_set1_epi32(-1));
+        return (V)_mm256_cvtps_pd(_mm256_mask_i64gather_ps(_mm_setzero_ps(), base, (__m256i)index, all_lanes, 4));
+    }
 }
 
 /// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once.
@@ -242,6 +264,18 @@ LTC_SIMD_AVX512_FN unsigned bits(VI m) {
 template <typename VI>
 LTC_SIMD_AVX512_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
+}
+
+/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened), masked forms as
+/// in avx2.
+template <typename V, typename VI>
+LTC_SIMD_AVX512_FN V gather(const float* base, VI index) {
+    if constexpr (sizeof(V) / sizeof(index[0]) == 16) {
+        return (V)_mm512_mask_i32gather_ps(_mm512_setzero_ps(), __mmask16(0xffff), (__m512i)index, base, 4);
+    } else {
+        return (V)_mm512_maskz_cvtps_pd(
+            __mmask8(0xff), _mm512_mask_i64gather_ps(_mm256_setzero_ps(), __mmask8(0xff), (__m512i)index, base, 4));
+    }
 }
 
 /// Whether this CPU (and its operating system, which must save the 512-bit registers: the
