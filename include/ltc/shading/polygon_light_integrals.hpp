@@ -93,6 +93,20 @@ LTC_HOST_DEVICE inline glm::vec<3, T> rescaled(const glm::vec<3, T>& p) {
     return s > T(0) ? p / s : glm::vec<3, T>(T(0));
 }
 
+/// Calls f with local_at, or, for polygons of at most 8 vertices (quads: the common light), with
+/// an accessor of a buffer holding local_at(i) for each i: the edge sums read vertices more than
+/// once (the quad path per clip test and edge, and each integral again), and local_at rescales
+/// and rotates (3 divisions and a matrix product) each time. The same values either way.
+template <typename T, typename LocalAt, typename F>
+LTC_HOST_DEVICE inline void with_local_vertices(const LocalAt& local_at, std::size_t n, F&& f) {
+    constexpr std::size_t buffered = 8;
+    if (n > buffered) return f(local_at);
+    glm::vec<3, T> local[buffered];
+    for (std::size_t i = 0; i < n; ++i) local[i] = local_at(i);
+    // i % buffered == i (i < n <= buffered): the mask only tells the compiler so.
+    f([&](std::size_t i) { return local[i % buffered]; });
+}
+
 /// shading_first: one clip in the local frame shared by both integrals, then M^-1 and the LTC
 /// space clip for the specular one. `clip_in_ltc_space = false` skips the second clip (the
 /// integral of the *unclamped* cosine over M^-1 of the clipped polygon: not D's integral, kept
@@ -167,11 +181,13 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
         default: {
             // The edge terms take unit vertices (M^-1 of any scale may leave M^-1 p far from it),
             // normalized once: before the general path, after the quad path's clip.
-            const auto local_dirs = detail::make_directions(local_at);
-            const auto ltc_dirs = detail::make_directions([&](std::size_t i) { return m_inv * local_at(i); });
-            r.form_factor = clamped_cosine<T, EdgePolicy>::signed_integral(local_dirs, n);
-            const T s = clamped_cosine<T, EdgePolicy>::signed_integral(ltc_dirs, n);
-            r.ltc = glm::determinant(m_inv) < T(0) ? -s : s;
+            detail::with_local_vertices<T>(local_at, n, [&](const auto& at) {
+                const auto local_dirs = detail::make_directions(at);
+                const auto ltc_dirs = detail::make_directions([&](std::size_t i) { return m_inv * at(i); });
+                r.form_factor = clamped_cosine<T, EdgePolicy>::signed_integral(local_dirs, n);
+                const T s = clamped_cosine<T, EdgePolicy>::signed_integral(ltc_dirs, n);
+                r.ltc = glm::determinant(m_inv) < T(0) ? -s : s;
+            });
             return r;
         }
     }
@@ -190,8 +206,10 @@ LTC_HOST_DEVICE inline T integrate_polygon_light_ltc(const shading_frame<T>& fra
     using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     if (!frame.valid || n < 3) return T(0);
     const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertices[i]) - P)); };
-    const auto ltc_dirs = detail::make_directions([&](std::size_t i) { return m_inv * local_at(i); });
-    const T s = clamped_cosine<T, EdgePolicy>::signed_integral(ltc_dirs, n);
+    T s = T(0);
+    detail::with_local_vertices<T>(local_at, n, [&](const auto& at) {
+        s = clamped_cosine<T, EdgePolicy>::signed_integral(detail::make_directions([&](std::size_t i) { return m_inv * at(i); }), n);
+    });
     return glm::determinant(m_inv) < T(0) ? -s : s;
 }
 
