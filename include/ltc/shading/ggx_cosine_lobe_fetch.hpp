@@ -60,7 +60,9 @@ inline constexpr ltc_table lobe_table(int l) {
 /// times the lobe's share. Finite for any input.
 template <typename T>
 inline std::array<ltc_coefficients<T>, 2> fetch(T cos_theta_v, T roughness) {
-    return {lobe_table(0).fetch(cos_theta_v, roughness), unpremultiplied(lobe_table(1).fetch(cos_theta_v, roughness))};
+    const ltc_table cosine = lobe_table(0), lobe = lobe_table(1);
+    const auto at = cosine.locate(cos_theta_v, roughness);  // the same nodes in both (size x size)
+    return {cosine.fetch_at(at), unpremultiplied(lobe.fetch_at(at))};
 }
 
 }  // namespace ggx_cosine_lobe

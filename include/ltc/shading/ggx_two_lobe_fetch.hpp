@@ -39,7 +39,9 @@ inline constexpr ltc_table lobe_table(int l) {
 /// input.
 template <typename T>
 inline std::array<ltc_coefficients<T>, 2> fetch(T cos_theta_v, T roughness) {
-    return {lobe_table(0).fetch(cos_theta_v, roughness), lobe_table(1).fetch(cos_theta_v, roughness)};
+    const ltc_table first = lobe_table(0), second = lobe_table(1);
+    const auto at = first.locate(cos_theta_v, roughness);  // the same nodes in both (size x size)
+    return {first.fetch_at(at), second.fetch_at(at)};
 }
 
 }  // namespace ggx_two_lobe

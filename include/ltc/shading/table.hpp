@@ -17,7 +17,9 @@
 // the four other structurally zero elements m_inv[0][1], m_inv[1][0], m_inv[1][2], m_inv[2][1]
 // are 0 for an isotropic BRDF. In the paper's row-major notation, m_inv = [c0 0 c2; 0 1 0; c1 0 c3]
 // with c_k the channels. The data are stored node after node, rows of constant roughness one
-// after the other: data[((a * width) + t) * 6 + channel].
+// after the other: data[((a * width) + t) * 6 + channel]. The batch kernels gather the floats
+// with 32-bit lane indices: a table used in batches keeps width * height * 6 below 2^31, at most
+// about 357 million nodes (the shipped tables have 1024 or 4096).
 //
 // Parameterization (the one of the paper's code release, which samples grazing angles densely):
 //   u = sqrt(1 - cos theta_v)   node t at u = t / (width - 1),  i.e. cos theta_v = 1 - u^2;
@@ -118,6 +120,16 @@ class ltc_table {
                      static_cast<std::size_t>(c)];
     }
 
+    /// Where a lookup reads: the nodes (t0, a0) and (t1, a1) around the position and the lerps'
+    /// weights. The same for every table of this width and height, so that a second table of the
+    /// same size reuses it (ggx_two_lobe::fetch, ggx_cosine_lobe::fetch: one square root and one
+    /// snap for both).
+    template <typename T>
+    struct position {
+        int t0, t1, a0, a1;
+        T fu, fv;
+    };
+
     /// Bilinear interpolation of all channels at the table coordinates (u, v) in [0, 1]^2 (clamped,
     /// NaN counts as 0): out[c] for c < channels.
     template <typename T>
@@ -127,13 +139,12 @@ class ltc_table {
         const T eps = std::numeric_limits<T>::epsilon();
         const T su = u * T(width_ - 1);
         const T sv = v * T(height_ - 1);
-        interpolate(su, sv, T(4) * eps * su, T(4) * eps * sv, out);
+        interpolate(locate_nodes(su, sv, T(4) * eps * su, T(4) * eps * sv), out);
     }
 
-    /// The LTC coefficients for the view angle cos(theta_v) and the roughness (alpha = roughness^2),
-    /// both clamped to [0, 1] (NaN counts as 0).
+    /// Where fetch(cos_theta_v, roughness) reads (inputs clamped to [0, 1], NaN counts as 0).
     template <typename T>
-    ltc_coefficients<T> fetch(T cos_theta_v, T roughness) const {
+    position<T> locate(T cos_theta_v, T roughness) const {
         const T c = detail::saturate(cos_theta_v);
         const T u = std::sqrt(T(1) - c);
         const T v = detail::saturate(roughness);
@@ -144,8 +155,21 @@ class ltc_table {
         // (width - 1)^2 eps / (2 s): near normal incidence a node cannot be hit more precisely.
         const T w1 = T(width_ > 1 ? width_ - 1 : 1);
         const T tol_u = eps * (w1 * w1 / (su > T(1) ? su : T(1)) + T(2) * su);
+        return locate_nodes(su, sv, tol_u, T(4) * eps * sv);
+    }
+
+    /// The LTC coefficients for the view angle cos(theta_v) and the roughness (alpha = roughness^2),
+    /// both clamped to [0, 1] (NaN counts as 0).
+    template <typename T>
+    ltc_coefficients<T> fetch(T cos_theta_v, T roughness) const {
+        return fetch_at(locate(cos_theta_v, roughness));
+    }
+
+    /// fetch at a position from locate (of this table, or of another of the same width and height).
+    template <typename T>
+    ltc_coefficients<T> fetch_at(const position<T>& at) const {
         T value[channels];
-        interpolate(su, sv, tol_u, T(4) * eps * sv, value);
+        interpolate(at, value);
         ltc_coefficients<T> r;
         r.m_inv = glm::mat<3, 3, T>(T(0));
         r.m_inv[0][0] = value[channel::m_inv_00];
@@ -160,18 +184,22 @@ class ltc_table {
 
   private:
     template <typename T>
-    void interpolate(T su, T sv, T tol_u, T tol_v, T* out) const {
-        int t0, a0;
-        T fu, fv;
-        detail::axis_position(su, width_, tol_u, t0, fu);
-        detail::axis_position(sv, height_, tol_v, a0, fv);
-        const int t1 = width_ > 1 ? t0 + 1 : t0;
-        const int a1 = height_ > 1 ? a0 + 1 : a0;
+    position<T> locate_nodes(T su, T sv, T tol_u, T tol_v) const {
+        position<T> p;
+        detail::axis_position(su, width_, tol_u, p.t0, p.fu);
+        detail::axis_position(sv, height_, tol_v, p.a0, p.fv);
+        p.t1 = width_ > 1 ? p.t0 + 1 : p.t0;
+        p.a1 = height_ > 1 ? p.a0 + 1 : p.a0;
+        return p;
+    }
+
+    template <typename T>
+    void interpolate(const position<T>& p, T* out) const {
         for (int c = 0; c < channels; ++c) {
             // (1 - f) v0 + f v1: exactly v0 at f = 0 and v1 at f = 1, the mean at f = 1/2.
-            const T lo = (T(1) - fu) * T(node(t0, a0, c)) + fu * T(node(t1, a0, c));
-            const T hi = (T(1) - fu) * T(node(t0, a1, c)) + fu * T(node(t1, a1, c));
-            out[c] = (T(1) - fv) * lo + fv * hi;
+            const T lo = (T(1) - p.fu) * T(node(p.t0, p.a0, c)) + p.fu * T(node(p.t1, p.a0, c));
+            const T hi = (T(1) - p.fu) * T(node(p.t0, p.a1, c)) + p.fu * T(node(p.t1, p.a1, c));
+            out[c] = (T(1) - p.fv) * lo + p.fv * hi;
         }
     }
 
