@@ -4,7 +4,7 @@
 //   f = rho cos ~= magnitude * ((1 - s) D_1 + s D_2),   D_i the LTC of M_i, s in (0, 1),
 //
 // each D_i integrated over a polygon exactly (eq. 3), so the shading integral stays closed form at
-// about 1.45x the cost of one lobe (one more LTC integral, no second form factor). M_1 and M_2
+// about 1.6x the cost of one lobe (one more LTC integral, no second form factor). M_1 and M_2
 // have the structure of ltc/fitting/ltc_parameters.hpp (4 parameters each about the BRDF's
 // average direction); s is the second lobe's share of the magnitude, parameterized by its logit.
 //
