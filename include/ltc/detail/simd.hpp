@@ -195,17 +195,13 @@ LTC_SIMD_AVX2_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
-/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened). The masked
-/// forms with a zero source: the unmasked ones leave GCC 12 warning of an uninitialized register.
+/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened).
 template <typename V, typename VI>
 LTC_SIMD_AVX2_FN V gather(const float* base, VI index) {
-    if constexpr (sizeof(V) / sizeof(index[0]) == 8) {
-        const __m256 all_lanes = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
-        return (V)_mm256_mask_i32gather_ps(_mm256_setzero_ps(), base, (__m256i)index, all_lanes, 4);
-    } else {
-        const __m128 all_lanes = _mm_castsi128_ps(_mm_set1_epi32(-1));
-        return (V)_mm256_cvtps_pd(_mm256_mask_i64gather_ps(_mm_setzero_ps(), base, (__m256i)index, all_lanes, 4));
-    }
+    if constexpr (sizeof(V) / sizeof(index[0]) == 8)
+        return (V)_mm256_i32gather_ps(base, (__m256i)index, 4);
+    else
+        return (V)_mm256_cvtps_pd(_mm256_i64gather_ps(base, (__m256i)index, 4));
 }
 
 /// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once.
@@ -266,8 +262,9 @@ LTC_SIMD_AVX512_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
-/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened), masked forms as
-/// in avx2.
+/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened). The masked forms
+/// with a zero source: GCC 12's unmasked ones start from an undefined register
+/// (_mm512_undefined_ps), which it then warns of as uninitialized.
 template <typename V, typename VI>
 LTC_SIMD_AVX512_FN V gather(const float* base, VI index) {
     if constexpr (sizeof(V) / sizeof(index[0]) == 16) {
