@@ -55,7 +55,8 @@
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png
 //                  do not change. --lobes cosine likewise with ltc::shade_polygon_light_cosine_lobe:
 //                  the opt-in table of an LTC and the clamped cosine (one LTC integral, the
-//                  cosine's integral the form factor of the diffuse term; about 1.14x the cost).
+//                  cosine's integral the form factor of the diffuse term; about 1.05-1.07x the
+//                  cost in the README's benchmark).
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
 //                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
 //                  (BRDF sampling of visible normals + uniform spherical-polygon sampling, balance

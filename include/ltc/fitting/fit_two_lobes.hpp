@@ -29,9 +29,12 @@
 // whose integral over a polygon is the form factor, which the shading computes anyway for the
 // diffuse term: one LTC's cost, with a share of GGX's lobe moved to the broad part that a single
 // LTC cannot follow (ltc/shading/cosine_lobe_polygon_light.hpp). The same objective fits D_M and
-// s (5 numbers), each node from its own one-lobe fit with s = 0.9 (marching the two-lobe fit along
-// the rows, as the two-LTC table does, measured 5.98% instead of 5.14% on the report's grid:
-// starts caught in a minimum where the cosine takes all, carried along a row).
+// s (5 numbers), its integrals over the spiral family with the floor at the significance
+// threshold (integral_family::spiral(), ltc/fitting/integral_objective.hpp: the tails, where the
+// cosine's share shows, count), each node from its own one-lobe fit with s = 0.9 (marching the
+// two-lobe fit along the rows, as the two-LTC table does, measured 5.98% instead of 5.14% on the
+// report's grid with the rings' family: starts caught in a minimum where the cosine takes all,
+// carried along a row).
 // Caveat (ggx_error_report, section 8): the fit stays fragile where the lobes' parts are not
 // settled (roughness 0.2-0.25 at grazing views), since nodes are marched from their neighbours
 // and a table interpolates lobe by lobe; variants of the objective's evaluation, of the starts, of
@@ -238,7 +241,8 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     const bool with_cosine = start.model == two_lobe_model::ltc_and_cosine;
     if (with_cosine) r.lobes[0] = ltc_parameters{}, refit_first = false;  // M_1 = I, about the normal
 
-    const integral_targets targets = make_integral_targets<Brdf>(V, alpha, axis, mom.magnitude);
+    const integral_targets targets = make_integral_targets<Brdf>(
+        V, alpha, axis, mom.magnitude, 64, 8, with_cosine ? integral_family::spiral() : integral_family::rings());
     std::vector<double> i1(targets.polygons.size()), i2(targets.polygons.size());
     detail::mixture_samples samples;
 
@@ -291,7 +295,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
             const double m = mom.magnitude;
             if (refit_first) ltc_integrals<objective_edge_policy>(targets, mi[0], i1.data());
             ltc_integrals<objective_edge_policy>(targets, mi[1], i2.data());
-            const double floor = 0.01 * m;
+            const double floor = targets.floor * m;
             double loss = 0;
             for (std::size_t k = 0; k < targets.polygons.size(); ++k) {
                 const double e = (m * ((1 - s) * i1[k] + s * i2[k]) - targets.ggx[k]) / (targets.ggx[k] + floor);
