@@ -61,10 +61,15 @@ TEST_CASE("integral objective: the spiral covering and its floor") {
         CAPTURE(i);
         // Uniform in solid angle over the upper hemisphere, mirrored into y >= 0.
         CHECK(std::abs(p.centre.z - (i + 0.5) / 16) < 1e-12);
+        // The golden angle's azimuth i 137.5 deg, mirrored into [0, 180] deg (y >= 0).
+        const double golden = std::fmod(i * 137.50776405003785, 360.0);
+        const double azimuth = std::atan2(p.centre.y, p.centre.x) * 180 / 3.141592653589793;
+        CHECK(std::abs(azimuth - (golden > 180 ? 360 - golden : golden)) < 1e-9);
         CHECK(p.centre.y >= 0);
         for (std::size_t j = 1; j < 3; ++j) CHECK(spiral[17 + 3 * i + j].centre == p.centre);
-        CHECK(std::abs(std::acos(glm::dot(p.centre, p.vertices[0])) - 0.15) < 1e-12);
-        CHECK(std::abs(std::acos(glm::dot(p.centre, spiral[17 + 3 * i + 2].vertices[0])) - 0.9) < 1e-12);
+        const double radii[] = {0.15, 0.45, 0.9};
+        for (std::size_t j = 0; j < 3; ++j)
+            CHECK(std::abs(std::acos(glm::dot(p.centre, spiral[17 + 3 * i + j].vertices[0])) - radii[j]) < 1e-12);
     }
     for (const auto& p : spiral)
         for (const auto& v : p.vertices) CHECK(std::abs(glm::length(v) - 1) < 1e-12);
@@ -72,7 +77,7 @@ TEST_CASE("integral objective: the spiral covering and its floor") {
     const node n{0.5, 0.25};
     const auto t1 = targets_of(n, 64, 8), t2 = targets_of(n, 64, 8, ltc::fit::integral_family::spiral());
     CHECK(t1.floor == 0.01);
-    CHECK(t2.floor == 1e-3);
+    CHECK(t2.floor == ltc::fit::significance_threshold);
     auto t3 = t2;
     t3.floor = 0.01;
     const glm::dmat3 m_inv(1.0);  // the cosine: far from GGX's lobe, so the floor matters
@@ -110,18 +115,24 @@ TEST_CASE("integral objective: the LTC side is transformed<>::integrate and the 
 }
 
 TEST_CASE("integral objective: the GGX side converges to the ground truth") {
-    // Tolerance, derived per polygon: 4 standard errors of the Monte Carlo ground truth, plus
-    // twice the change of the quadrature from (64, 12) to (128, 24) samples (its error is at
-    // most about that change when the finer one is at least twice as accurate), plus 0.5% of
-    // G for the rest; and 3% of G in any case (the default quadrature, (64, 8), was measured
-    // within 2.7% of the ground truth on every polygon of the rings' family at 9 nodes, the
-    // finer one within 0.8%). Both families: the spiral's small hexagons lie in the tails.
+    // Each family with the quadrature its fits use, (64, 8). Tolerance, derived per polygon: 4
+    // standard errors of the Monte Carlo ground truth, plus twice the change of the quadrature
+    // from (64, 8) to (128, 24) samples (its error is at most about that change when the finer
+    // one is at least twice as accurate), plus 0.5% of G for the rest; and in any case the
+    // bound integral_family states: 3% of G for the rings (measured within 2.7% on every
+    // polygon of 9 nodes), 4% for the spiral (measured within 3.9% here: its lowest hexagons,
+    // at elevation 1.8 deg, straddle the horizon).
     const node nodes[] = {{1.0, 0.0625}, {0.5, 0.25}, {0.17364817766693041, 0.25}, {0.17364817766693041, 1.0}};
     for (const bool spiral : {false, true}) {
         const auto family = spiral ? ltc::fit::integral_family::spiral() : ltc::fit::integral_family::rings();
+        const double bound = spiral ? 0.04 : 0.03;
         for (const node& n : nodes) {
-            const auto coarse = targets_of(n, 64, 12, family), fine = targets_of(n, 128, 24, family);
+            const auto coarse = targets_of(n, 64, 8, family), fine = targets_of(n, 128, 24, family);
             REQUIRE(coarse.polygons.size() == fine.polygons.size());
+            for (std::size_t k = 0; k < coarse.polygons.size(); ++k) {  // the same polygons, in order
+                REQUIRE(coarse.polygons[k].centre == fine.polygons[k].centre);
+                REQUIRE(coarse.polygons[k].planar_radius == fine.polygons[k].planar_radius);
+            }
             const glm::dvec3 V = ltc::brdf::view_from_cos(n.cos_theta);
             for (std::size_t k = 0; k < coarse.polygons.size(); ++k) {
                 ltc::ground_truth::options o;
@@ -134,7 +145,7 @@ TEST_CASE("integral objective: the GGX side converges to the ground truth") {
                 const double tol = 4 * gt.standard_error + 2 * std::abs(coarse.ggx[k] - fine.ggx[k]) + 0.005 * gt.mean;
                 CAPTURE(spiral, n.cos_theta, n.alpha, k, coarse.ggx[k], fine.ggx[k], gt.mean, gt.standard_error);
                 CHECK(std::abs(coarse.ggx[k] - gt.mean) <= tol);
-                CHECK(std::abs(coarse.ggx[k] - gt.mean) <= 0.03 * gt.mean);
+                CHECK(std::abs(coarse.ggx[k] - gt.mean) <= bound * gt.mean);
             }
         }
     }

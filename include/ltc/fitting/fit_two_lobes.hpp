@@ -242,7 +242,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     if (with_cosine) r.lobes[0] = ltc_parameters{}, refit_first = false;  // M_1 = I, about the normal
 
     const integral_targets targets = make_integral_targets<Brdf>(
-        V, alpha, axis, mom.magnitude, 64, 8, with_cosine ? integral_family::spiral() : integral_family::rings());
+        V, alpha, axis, mom.magnitude, with_cosine ? integral_family::spiral() : integral_family::rings());
     std::vector<double> i1(targets.polygons.size()), i2(targets.polygons.size());
     detail::mixture_samples samples;
 

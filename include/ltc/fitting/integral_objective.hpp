@@ -26,8 +26,11 @@
 //              included, where the cosine's share of a two-part lobe shows: 16 centres of the
 //              golden-angle spiral over the whole upper hemisphere, uniform in solid angle
 //              (z_i = (i + 1/2) / 16, azimuth i 137.508 deg), each mirrored into y >= 0 (f is
-//              symmetric in y: a polygon and its mirror image have the same integrals), with
-//              hexagons of radius 0.15, 0.45 and 0.9 rad on each: 48 hexagons.
+//              symmetric in y, so a hexagon at the mirrored centre stands for one at the
+//              original; mirroring rather than folding the azimuths into [0, 180) keeps the
+//              centres spread: largest gap 0.435 rad against 0.642), with hexagons of radius
+//              0.15, 0.45 and 0.9 rad on each: 48 hexagons. Its lowest hexagons straddle the
+//              horizon in the tails, where the quadrature below is least accurate (integral_family).
 // This family is deliberately not the grid of examples/ggx_error_report (rectangles, triangles,
 // pentagons at the mirror direction, the zenith, az 90 el 30 and az 135 el 5, angular radii
 // 0.1 / 0.46 / 1.1 rad whatever the roughness): another shape, lobe polygons placed relative to
@@ -44,9 +47,9 @@
 // into 6 triangles; density on the sphere 1 / (A (L.c)^3), A the planar area):
 //   G_k = sum_{brdf i, L_i in P_k} f_i / (N_b p_b + N_k p_k) + sum_{poly j} f_j / (N_b p_b + N_k p_k).
 // Polygons with G_k < 1e-3 magnitude are dropped (the error report's significance threshold).
-// The loss is the mean squared relative error with a floor of 1% of the magnitude (the albedo)
-// in the denominator, (1/K) sum_k ((m I_k - G_k) / (G_k + 0.01 m_0))^2, m_0 the node's magnitude:
-// without the floor the faint tails (which a single lobe cannot follow everywhere) outvote the
+// The loss is the mean squared relative error with a floor f of the magnitude (the albedo) in
+// the denominator, (1/K) sum_k ((m I_k - G_k) / (G_k + f m_0))^2, m_0 the node's magnitude. With
+// the rings f = 1%: without the floor the faint tails (which a single lobe cannot follow everywhere) outvote the
 // few polygons on the peak; squared rather than absolute for a smooth objective (measured on
 // examples/ggx_error_report, section 8, before the 0.6 rad hexagons were added: floor 0 / 0.01
 // / 0.05 and L1 / L2 gave a mean error of 7.4-8.1%, 0.01 with L2 the best). With the spiral the
@@ -118,19 +121,32 @@ inline family_polygon make_hexagon(const glm::dvec3& c, double r) {
 /// 0.25 and 0.6 rad, or the spiral of 16 centres with 3 radii.
 enum class hemisphere_covering { rings, spiral };
 
-/// The family's covering and the loss's floor (a fraction of the node's magnitude).
+/// Polygons whose GGX integral is below this fraction of the magnitude are dropped from the
+/// targets (the error report's significance threshold).
+inline constexpr double significance_threshold = 1e-3;
+
+/// The GGX quadrature's default sizes (make_integral_targets): n_b x n_b BRDF samples, 6 m x m
+/// samples per polygon.
+inline constexpr int default_brdf_samples = 64;
+inline constexpr int default_polygon_samples = 8;
+
+/// What a fit's integral targets are made of: the covering and the loss's floor (a fraction of
+/// the node's magnitude). The defaults are the rings'.
 struct integral_family {
     hemisphere_covering covering = hemisphere_covering::rings;
     double floor = 0.01;
 
     /// The one-lobe `integrals` objective's and the two-LTC table's: the rings, a floor of 1%.
-    static constexpr integral_family rings() { return {hemisphere_covering::rings, 0.01}; }
-    /// The LTC-and-cosine table's: the spiral, a floor at the significance threshold (1e-3).
-    static constexpr integral_family spiral() { return {hemisphere_covering::spiral, 1e-3}; }
+    static constexpr integral_family rings() { return {}; }
+    /// The LTC-and-cosine table's: the spiral, a floor at the significance threshold. The default
+    /// quadrature is within 4% of the ground truth on its hexagons (3.9% on its lowest ones,
+    /// which straddle the horizon; the rings' within 3%: tests/test_fit_objective.cpp); with
+    /// m = 12 (within 2.4%) its table came out worse, one node's LTC flipped (README, GGX section).
+    static constexpr integral_family spiral() { return {hemisphere_covering::spiral, significance_threshold}; }
 };
 
 /// The family of the file comment for a lobe of average direction `axis` (unit, in the
-/// xz-plane) and roughness alpha.
+/// xz-plane) and roughness alpha: the lobe's hexagons, then the covering's.
 inline std::vector<family_polygon> polygon_family(const glm::dvec3& axis, double alpha,
                                                   hemisphere_covering covering = hemisphere_covering::rings) {
     std::vector<family_polygon> family;
@@ -155,9 +171,7 @@ inline std::vector<family_polygon> polygon_family(const glm::dvec3& axis, double
         family.push_back(make_hexagon(off_axis(2 * r, pi<double>()), r));
         family.push_back(make_hexagon(off_axis(2 * r, 0.5 * pi<double>()), r));
     }
-    // A fixed covering of the upper half-hemisphere (the lobe is symmetric in y): radius 0.25
-    // rad at elevations 4, 15, 35, 60 deg, azimuths 22.5 + 45 k deg, and at 80 deg (the lowest
-    // ring straddles the horizon); radius 0.6 rad at elevations 12 and 45 deg, azimuths 60 k deg.
+    // A fixed covering of the upper half-hemisphere (the lobe is symmetric in y).
     const auto at = [](double el_deg, double az_deg) {
         const double e = el_deg * pi<double>() / 180.0, a = az_deg * pi<double>() / 180.0;
         return glm::dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
@@ -172,6 +186,9 @@ inline std::vector<family_polygon> polygon_family(const glm::dvec3& axis, double
         }
         return family;
     }
+    // The rings: radius 0.25 rad at elevations 4, 15, 35, 60 deg, azimuths 22.5 + 45 k deg, and
+    // at 80 deg (the lowest ring straddles the horizon); radius 0.6 rad at elevations 12 and 45
+    // deg, azimuths 60 k deg.
     for (double el : {4.0, 15.0, 35.0, 60.0})
         for (int k = 0; k < 4; ++k) family.push_back(make_hexagon(at(el, 22.5 + 45.0 * k), 0.25));
     family.push_back(make_hexagon(at(80.0, 22.5), 0.25));
@@ -186,17 +203,19 @@ struct integral_targets {
     std::vector<family_polygon> polygons;
     std::vector<double> ggx;
     double magnitude = 0;
-    double floor = 0.01;  ///< the loss's floor, a fraction of the magnitude (integral_family)
+    double floor = integral_family{}.floor;  ///< the loss's floor, a fraction of the magnitude
 };
 
-/// For the view V, roughness alpha, the lobe's average direction `axis` and magnitude: n_b x n_b
-/// BRDF samples, 6 m x m samples per polygon. Defaults 64, 8: about 1.3 ms per node,
-/// within 2.7% of the Monte Carlo ground truth on every polygon of 9 nodes (theta_v 0 / 60 /
-/// 80 deg x roughness 0.25 / 0.5 / 1); 64, 12 is within 1.4% at twice the cost, and fits
-/// tables of the same error (examples/ggx_error_report, section 8: 6.95% either way).
+/// For the view V, roughness alpha, the lobe's average direction `axis` and magnitude: the
+/// polygons of `which` (its covering; its floor goes into the targets), n_b x n_b BRDF samples,
+/// 6 m x m samples per polygon. For the rings, 64, 8: about 1.3 ms per node, within 2.7% of the
+/// Monte Carlo ground truth on every polygon of 9 nodes (theta_v 0 / 60 / 80 deg x roughness
+/// 0.25 / 0.5 / 1); 64, 12 is within 1.4% at twice the cost, and fits tables of the same error
+/// (examples/ggx_error_report, section 8: 6.95% either way).
 template <template <typename> class Brdf>
 integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude,
-                                       int n_b = 64, int m = 8, const integral_family& which = integral_family::rings()) {
+                                       int n_b = default_brdf_samples, int m = default_polygon_samples,
+                                       const integral_family& which = integral_family::rings()) {
     using B = Brdf<double>;
     const std::vector<family_polygon> family = polygon_family(axis, alpha, which.covering);
     const double N_b = double(n_b) * double(n_b), N_p = 6.0 * double(m) * double(m);
@@ -239,11 +258,18 @@ integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const 
     r.magnitude = magnitude;
     r.floor = which.floor;
     for (std::size_t k = 0; k < family.size(); ++k)
-        if (g[k] >= 1e-3 * magnitude && std::isfinite(g[k])) {
+        if (g[k] >= significance_threshold * magnitude && std::isfinite(g[k])) {
             r.polygons.push_back(family[k]);
             r.ggx.push_back(g[k]);
         }
     return r;
+}
+
+/// The targets of `which` with the default quadrature: what the fits use.
+template <template <typename> class Brdf>
+integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude,
+                                       const integral_family& which) {
+    return make_integral_targets<Brdf>(V, alpha, axis, magnitude, default_brdf_samples, default_polygon_samples, which);
 }
 
 /// The LTC integrals I_k of the distribution of m_inv (any scale, ltc_space clipping), their edge
