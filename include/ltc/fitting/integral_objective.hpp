@@ -28,9 +28,10 @@
 //              (z_i = (i + 1/2) / 16, azimuth i 137.508 deg), each mirrored into y >= 0 (f is
 //              symmetric in y, so a hexagon at the mirrored centre stands for one at the
 //              original; mirroring rather than folding the azimuths into [0, 180) keeps the
-//              centres spread: largest gap 0.435 rad against 0.642), with hexagons of radius
-//              0.15, 0.45 and 0.9 rad on each: 48 hexagons. Its lowest hexagons straddle the
-//              horizon in the tails, where the quadrature below is least accurate (integral_family).
+//              centres spread: no direction farther than about 0.44 rad from its nearest
+//              centre, against 0.66), with hexagons of radius 0.15, 0.45 and 0.9 rad on each:
+//              48 hexagons. Its lowest hexagons straddle the horizon in the tails, where the
+//              quadrature below is least accurate (integral_family).
 // This family is deliberately not the grid of examples/ggx_error_report (rectangles, triangles,
 // pentagons at the mirror direction, the zenith, az 90 el 30 and az 135 el 5, angular radii
 // 0.1 / 0.46 / 1.1 rad whatever the roughness): another shape, lobe polygons placed relative to
@@ -49,13 +50,14 @@
 // Polygons with G_k < 1e-3 magnitude are dropped (the error report's significance threshold).
 // The loss is the mean squared relative error with a floor f of the magnitude (the albedo) in
 // the denominator, (1/K) sum_k ((m I_k - G_k) / (G_k + f m_0))^2, m_0 the node's magnitude. With
-// the rings f = 1%: without the floor the faint tails (which a single lobe cannot follow everywhere) outvote the
-// few polygons on the peak; squared rather than absolute for a smooth objective (measured on
-// examples/ggx_error_report, section 8, before the 0.6 rad hexagons were added: floor 0 / 0.01
-// / 0.05 and L1 / L2 gave a mean error of 7.4-8.1%, 0.01 with L2 the best). With the spiral the
-// floor is the significance threshold, 1e-3 m_0: the tails count as relative errors, as the
-// report counts them, and a lobe of two parts can follow them (the LTC-and-cosine table: 4.35%
-// instead of 5.14% on the report's grid, 5.36% instead of 6.78% off it; README, GGX section).
+// the rings f = 1%: without the floor the faint tails (which a single lobe cannot follow
+// everywhere) outvote the few polygons on the peak; squared rather than absolute for a smooth
+// objective (measured on examples/ggx_error_report, section 8, before the 0.6 rad hexagons
+// were added: floor 0 / 0.01 / 0.05 and L1 / L2 gave a mean error of 7.4-8.1%, 0.01 with L2 the
+// best). With the spiral the floor is the significance threshold, 1e-3 m_0: the tails count as
+// relative errors, as the report counts them, and a lobe of two parts can follow them (the
+// LTC-and-cosine table: 4.35% instead of 5.14% on the report's grid, 5.36% instead of 6.78% off
+// it; README, GGX section).
 #pragma once
 
 #include <ltc/core/clamped_cosine.hpp>
