@@ -28,10 +28,10 @@
 //              (z_i = (i + 1/2) / 16, azimuth i 137.508 deg), each mirrored into y >= 0 (f is
 //              symmetric in y, so a hexagon at the mirrored centre stands for one at the
 //              original; mirroring rather than folding the azimuths into [0, 180) keeps the
-//              centres spread: no direction farther than about 0.44 rad from its nearest
-//              centre, against 0.66), with hexagons of radius 0.15, 0.45 and 0.9 rad on each:
-//              48 hexagons. Its lowest hexagons straddle the horizon in the tails, where the
-//              quadrature below is least accurate (integral_family).
+//              centres spread: no direction farther than 0.44 rad from its nearest centre,
+//              against 0.66; tests/test_fit_objective.cpp), with hexagons of radius 0.15, 0.45
+//              and 0.9 rad on each: 48 hexagons. Its lowest hexagons straddle the horizon in the
+//              tails, where the quadrature below is least accurate (integral_family).
 // This family is deliberately not the grid of examples/ggx_error_report (rectangles, triangles,
 // pentagons at the mirror direction, the zenith, az 90 el 30 and az 135 el 5, angular radii
 // 0.1 / 0.46 / 1.1 rad whatever the roughness): another shape, lobe polygons placed relative to
