@@ -68,7 +68,7 @@ void print_horizon(const std::vector<config>& grid, const evaluation& ev, const 
                     const double az = side ? 180 * deg : 0.0, el = -10 * deg;
                     config c{t, r, 0, 0, 0, {}, true, {}};
                     c.vertices = make_light(0, 0.15, dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)));
-                    const double albedo = shipped(std::cos(thetas[t] * deg), roughnesses[r]).magnitude;
+                    const double albedo = part_scale(shipped(std::cos(thetas[t] * deg), roughnesses[r]));
                     const double leak = ltc_estimate(c, shipped, exact) / albedo;
                     if (leak > worst[side]) worst[side] = leak, worst_t[side] = t, worst_r[side] = r;
                     if (ltc_estimate(c, shipped, clip_first) != 0.0) std::printf("  (clip-first leaked: a bug)\n");

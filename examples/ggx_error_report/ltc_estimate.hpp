@@ -1,4 +1,4 @@
-// ggx_error_report/ltc_estimate.hpp -- the LTC estimate magnitude * I_ltc of a configuration with
+// ggx_error_report/ltc_estimate.hpp -- the LTC estimate magnitude * I_ltc (or fresnel * I_ltc) of a configuration with
 // each horizon-clipping method (exact, clip-first, clip-once, sphere, sphere-tab: main.cpp's file
 // comment), from any table (a fetch function), for the whole grid.
 #pragma once
@@ -24,6 +24,17 @@ const char* const method_names[method_count] = {"exact", "clip-first", "clip-onc
 
 using fetch_fn = std::function<ltc::ltc_coefficients<double>(double, double)>;
 
+/// --f0 F0: the specular colour of every estimate and its ground truth, Schlick's factor
+/// F = F0 + (1 - F0) (1 - V.H)^5 in the integrand rho cos F, and the tables' F0 magnitude +
+/// (1 - F0) fresnel (Hill 2016); 0.04 is a dielectric's, whose specular term is then mostly the
+/// Fresnel part. The default, 1, is rho cos and the magnitude channel alone (no Fresnel).
+inline double report_f0 = 1.0;
+
+/// The factor of `lobe` that scales its LTC integral at F0 = report_f0.
+inline double part_scale(const ltc::ltc_coefficients<double>& lobe) {
+    return report_f0 * lobe.magnitude + (1.0 - report_f0) * lobe.fresnel;
+}
+
 /// magnitude * I_ltc for the configuration, with the given method.
 inline double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
     const double theta = thetas[c.theta] * deg;
@@ -43,7 +54,7 @@ inline double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
         case sphere: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::sphere_analytic).ltc; break;
         default: I = ltc::integrate_polygon_light(frame, lobe.m_inv, P, c.vertices.data(), n, ltc::horizon_clipping::sphere_table).ltc; break;
     }
-    return lobe.magnitude * std::max(0.0, I);  // the lights are front-facing: one-sided
+    return part_scale(lobe) * std::max(0.0, I);  // the lights are front-facing: one-sided
 }
 
 struct evaluation {
@@ -57,7 +68,7 @@ inline evaluation evaluate(const std::vector<config>& grid, const fetch_fn& fetc
     ev.albedo.resize(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const auto& c = grid[i];
-        ev.albedo[i] = fetch(std::cos(thetas[c.theta] * deg), roughnesses[c.rough]).magnitude;
+        ev.albedo[i] = part_scale(fetch(std::cos(thetas[c.theta] * deg), roughnesses[c.rough]));
         for (int m = 0; m < method_count; ++m)
             if (all_methods || m == exact) ev.value[m][i] = ltc_estimate(c, fetch, m);
     }

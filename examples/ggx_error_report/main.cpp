@@ -1,7 +1,7 @@
 // ggx_error_report -- how far LTC shading of polygonal lights is from the real GGX integral.
 //
 //   ggx_error_report [--fit-sizes 8,16,32] [--objectives integrals,combined,cells,two-lobe-fit,cosine-lobe-fit] [--objective-size 64]
-//                    [--target 0.002] [--threads K] [--grid on|off] [--list]
+//                    [--target 0.002] [--threads K] [--grid on|off] [--f0 1] [--list]
 //
 // (--fit-sizes 0 skips section 7, --objectives none section 8; --list prints every configuration;
 // about 40 s on 2 cores, plus about 10-20 s per objective of section 8, 2 s for cells, 20 s for
@@ -13,7 +13,9 @@
 // --target (default 0.2%) of the mean, or of 1e-3 albedo for negligible configurations, or
 // 2^22 iterations), and the LTC estimate
 // magnitude * I_ltc(P) of the shipped GGX table (ltc::ggx::fetch; F0 = 1, i.e. no Fresnel,
-// like the ground truth) with each horizon-clipping method of ltc/shading/polygon_light.hpp:
+// like the ground truth; with --f0 F0 both take Schlick's factor instead, the integral of
+// rho cos (F0 + (1 - F0) (1 - V.H)^5) and (F0 magnitude + (1 - F0) fresnel) I_ltc(P): --f0 0.04
+// is a dielectric's specular term, mostly the Fresnel part) with each horizon-clipping method of ltc/shading/polygon_light.hpp:
 //
 //   exact        horizon_clipping::ltc_space: the paper's order, exact integral of the LTC
 //   clip-first   horizon_clipping::shading_first: clip to the shading horizon, then M^-1
@@ -58,6 +60,7 @@
 #include "statistics.hpp"
 
 #include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/brdf/schlick.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
@@ -124,12 +127,15 @@ int main(int argc, char** argv) {
             threads = unsigned(std::max(1, std::atoi(argv[++i])));
         else if (a == "--grid" && i + 1 < argc && (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off"))
             which_grid = std::string(argv[++i]) == "off" ? 1 : 0;
+        else if (a == "--f0" && i + 1 < argc && std::atof(argv[i + 1]) >= 0 && std::atof(argv[i + 1]) <= 1)
+            report_f0 = std::atof(argv[++i]);
         else if (a == "--list")
             list = true;
         else {
             std::fprintf(stderr,
                          "usage: ggx_error_report [--fit-sizes 8,16,32] [--objectives integrals,combined,cells,two-lobe-fit,cosine-lobe-fit]\n"
-                         "                        [--objective-size 64] [--target 0.002] [--threads K] [--grid on|off] [--list]\n");
+                         "                        [--objective-size 64] [--target 0.002] [--threads K] [--grid on|off]\n"
+                         "                        [--f0 F0] [--list]\n");
             return 2;
         }
     }
@@ -140,7 +146,12 @@ int main(int argc, char** argv) {
     std::vector<config> grid = make_grid();
     std::size_t straddling = 0;
     for (const auto& c : grid) straddling += c.straddles;
-    std::printf("LTC shading of polygonal lights vs Monte Carlo GGX ground truth\n");
+    if (report_f0 == 1.0)
+        std::printf("LTC shading of polygonal lights vs Monte Carlo GGX ground truth\n");
+    else
+        std::printf("LTC shading of polygonal lights vs Monte Carlo GGX ground truth with Schlick's factor, F0 = %g\n"
+                    "(rho cos F against (F0 magnitude + (1 - F0) fresnel) I_ltc; 'albedo' below is that factor)\n",
+                    report_f0);
     std::printf("grid%s: theta_v {%g,%g,%g,%g} deg x roughness {%g,%g,%g,%g,%g} (alpha = roughness^2)\n"
                 "      x {rectangle 2:1, triangle, pentagon} x size/distance {0.1,0.5,2}\n"
                 "      x placement {mirror, zenith, side (az 90, el 30), low (az 135, el 5)}\n"
@@ -163,8 +174,11 @@ int main(int argc, char** argv) {
         const double r = roughnesses[c.rough];
         ltc::ground_truth::options o = opt;
         o.seed = 0x5EED0000u + i;
-        o.target_absolute_error = target * 1e-3 * shipped(std::cos(theta), r).magnitude;
-        c.gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, c.vertices.data(), c.vertices.size(), o);
+        o.target_absolute_error = target * 1e-3 * part_scale(shipped(std::cos(theta), r));
+        c.gt = report_f0 == 1.0 ? ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, c.vertices.data(),
+                                                               c.vertices.size(), o)
+                                : ltc::ground_truth::integrate(ltc::brdf::with_schlick<ltc::brdf::ggx>{report_f0}, V, r * r, c.vertices.data(),
+                                                               c.vertices.size(), o);
     });
     const double gt_seconds = seconds_since(t_gt);
 

@@ -67,6 +67,7 @@ evaluation oracle(const std::vector<config>& grid, const evaluation& ev) {
                 c.m_inv = glm::dmat3(1.0);
                 c.m_inv[0][0] = u[0], c.m_inv[0][2] = u[1], c.m_inv[2][0] = u[2], c.m_inv[2][2] = u[3];
                 c.magnitude = base.magnitude * std::exp(u[4]);
+                c.fresnel = base.fresnel * std::exp(u[4]);
                 return c;
             };
             const auto loss = [&](const std::array<double, 5>& u) {
@@ -113,7 +114,8 @@ evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int 
             std::array<ltc::ltc_coefficients<double>, 2> lobe;
             lobe[0].m_inv = node.m_inv;
             lobe[0].magnitude = node.magnitude;
-            lobe[1].magnitude = 0;
+            lobe[0].fresnel = node.fresnel;
+            lobe[1].magnitude = lobe[1].fresnel = 0;
             if (lobes == 2) {
                 const ltc::fit::two_lobe_start st = model == ltc::fit::two_lobe_model::ltc_and_cosine
                                                         ? ltc::fit::start_with_cosine(node.parameters)
@@ -122,6 +124,8 @@ evaluation cell_fits(const std::vector<config>& grid, const evaluation& ev, int 
                 for (int l = 0; l < 2; ++l) lobe[std::size_t(l)].m_inv = two.m_inv[std::size_t(l)];
                 lobe[0].magnitude = two.magnitude * (1 - two.share);
                 lobe[1].magnitude = two.magnitude * two.share;
+                lobe[0].fresnel = two.fresnel * (1 - two.fresnel_share);
+                lobe[1].fresnel = two.fresnel * two.fresnel_share;
             }
             for (std::size_t i = 0; i < grid.size(); ++i) {
                 if (grid[i].theta != t || grid[i].rough != r) continue;

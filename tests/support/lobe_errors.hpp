@@ -6,6 +6,7 @@
 #include "support/shading_scenes.hpp"
 
 #include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/brdf/schlick.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/polygon_light.hpp>
 
@@ -24,19 +25,21 @@ struct lobe_errors {
 
 /// |LTC - GT| / GT of the one-lobe shading and of `other`, a shading with the arguments of
 /// ltc::shade_polygon_light (P, N, V, roughness, F0, albedo, radiance, vertices, n, side; called
-/// at the origin, N = z, F0 = 1, no diffuse, one-sided), for the light L (vertices facing the
-/// origin) at view angle theta (deg) and roughness r; ground truth by
+/// at the origin, N = z, no diffuse, one-sided), for the light L (vertices facing the origin) at
+/// view angle theta (deg) and roughness r, with the specular colour f0 (1: no Fresnel term;
+/// otherwise Schlick's factor in the ground truth, ltc/fitting/brdf/schlick.hpp); ground truth by
 /// ltc::ground_truth::integrate (MIS, 2^16 iterations, the given seed; relative standard error
 /// below 0.5%, checked).
 template <typename Other>
-lobe_errors errors_against_truth(double theta, double r, const std::vector<dvec3>& L, std::uint64_t seed, Other&& other) {
+lobe_errors errors_against_truth(double theta, double r, const std::vector<dvec3>& L, std::uint64_t seed, Other&& other,
+                                 double f0 = 1.0) {
     const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
     ltc::ground_truth::options opt;
     opt.samples = 1u << 16;
     opt.seed = seed;
-    const auto gt = ltc::ground_truth::integrate(ltc::brdf::ggx<double>{}, V, r * r, L.data(), L.size(), opt);
+    const auto gt = ltc::ground_truth::integrate(ltc::brdf::with_schlick<ltc::brdf::ggx>{f0}, V, r * r, L.data(), L.size(), opt);
     const auto shade = [&](auto&& shading) -> ltc::polygon_light_result<double> {
-        return shading(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(1), dvec3(0), dvec3(1), L.data(), L.size(),
+        return shading(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(f0), dvec3(0), dvec3(1), L.data(), L.size(),
                        ltc::sidedness::one_sided);
     };
     const auto one = shade([](auto&&... a) { return ltc::shade_polygon_light(a...); });

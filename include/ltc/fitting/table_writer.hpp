@@ -129,7 +129,8 @@ inline std::string table_header_text(const std::string& brdf, const std::string&
 
 /// The text of ltc/tables/<brdf>_two_lobe.hpp for the two-lobe table `tab` fitted with `opt`
 /// (ltc/fitting/fit_two_lobes.hpp): two tables of the layout of ltc/shading/table.hpp, one per
-/// lobe, each lobe's magnitude and Fresnel term multiplied by its share. For the model
+/// lobe, each lobe's magnitude multiplied by its share and its Fresnel term by its share of that
+/// (two_lobe_result::fresnel_share). For the model
 /// ltc_and_cosine (tab.model), ltc/tables/<brdf>_cosine_lobe.hpp: lobe 1 the cosine (m_inv = I),
 /// lobe 2's m_inv premultiplied (two_lobe_table::packed).
 inline std::string two_lobe_table_header_text(const std::string& brdf, const std::string& description,
@@ -162,7 +163,8 @@ inline std::string two_lobe_table_header_text(const std::string& brdf, const std
       << "// node t along u = sqrt(1 - cos theta_v) = t / " << (n - 1) << " (cos theta_v clamped to at least "
       << opt.cos_theta_min << ") and a along roughness = a / " << (n - 1) << ";\n"
       << "// channels m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] of M_l^-1 / M_l^-1[1][1], then the magnitude\n"
-      << "// and the Fresnel term times the lobe's share (1 - s, s)"
+      << "// times the lobe's share (1 - s, s), and the Fresnel term times the lobe's share of it (1 - s_F, s_F: fitted\n"
+      << "// on its own, fit_two_lobes.hpp's fresnel_share_of)"
       << (with_cosine ? "; lobe 2's four m_inv channels premultiplied by its\n// magnitude channel. Subnormals flushed to 0"
                       : "")
       << (brdf == "ggx" ? ". Look it up with ltc::" + name + "::fetch.\n" : std::string(".\n"))

@@ -57,7 +57,8 @@ inline constexpr ltc_table lobe_table(int l) {
 /// Both lobes' coefficients for the view angle cos(theta_v) and the roughness (alpha =
 /// roughness^2), inputs clamped to [0, 1] (NaN counts as 0): lobes[0] the cosine (m_inv = I),
 /// lobes[1] the LTC (m_inv in the local frame, m_inv[1][1] = 1); each magnitude and Fresnel term
-/// times the lobe's share. Finite for any input.
+/// times the lobe's share of it (the Fresnel term's split fitted on its own,
+/// ltc/fitting/fit_two_lobes.hpp's fresnel_share_of). Finite for any input.
 template <typename T>
 inline std::array<ltc_coefficients<T>, 2> fetch(T cos_theta_v, T roughness) {
     const ltc_table cosine = lobe_table(0), lobe = lobe_table(1);
