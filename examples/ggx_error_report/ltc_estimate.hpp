@@ -1,5 +1,5 @@
-// ggx_error_report/ltc_estimate.hpp -- the LTC estimate magnitude * I_ltc (or fresnel * I_ltc) of a configuration with
-// each horizon-clipping method (exact, clip-first, clip-once, sphere, sphere-tab: main.cpp's file
+// ggx_error_report/ltc_estimate.hpp -- the LTC estimate (F0 magnitude + (1 - F0) fresnel) I_ltc of a
+// configuration (F0 = 1 by default: magnitude * I_ltc) with each horizon-clipping method (exact, clip-first, clip-once, sphere, sphere-tab: main.cpp's file
 // comment), from any table (a fetch function), for the whole grid.
 #pragma once
 
@@ -26,8 +26,8 @@ using fetch_fn = std::function<ltc::ltc_coefficients<double>(double, double)>;
 
 /// --f0 F0: the specular colour of every estimate and its ground truth, Schlick's factor
 /// F = F0 + (1 - F0) (1 - V.H)^5 in the integrand rho cos F, and the tables' F0 magnitude +
-/// (1 - F0) fresnel (Hill 2016); 0.04 is a dielectric's, whose specular term is then mostly the
-/// Fresnel part. The default, 1, is rho cos and the magnitude channel alone (no Fresnel).
+/// (1 - F0) fresnel (Hill 2016); 0.04 is a dielectric's, whose specular term at grazing views is
+/// largely the Fresnel part. The default, 1, is rho cos and the magnitude channel alone (no Fresnel).
 inline double report_f0 = 1.0;
 
 /// The factor of `lobe` that scales its LTC integral at F0 = report_f0.
@@ -35,7 +35,7 @@ inline double part_scale(const ltc::ltc_coefficients<double>& lobe) {
     return report_f0 * lobe.magnitude + (1.0 - report_f0) * lobe.fresnel;
 }
 
-/// magnitude * I_ltc for the configuration, with the given method.
+/// part_scale(lobe) * I_ltc for the configuration, with the given method.
 inline double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
     const double theta = thetas[c.theta] * deg;
     const dvec3 N(0, 0, 1), V(std::sin(theta), 0, std::cos(theta)), P(0);
@@ -59,7 +59,7 @@ inline double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
 
 struct evaluation {
     std::vector<double> value[method_count];  // LTC estimates per configuration
-    std::vector<double> albedo;               // magnitude of the table at the configuration
+    std::vector<double> albedo;               // part_scale of the table at the configuration
 };
 
 inline evaluation evaluate(const std::vector<config>& grid, const fetch_fn& fetch, bool all_methods) {

@@ -15,7 +15,7 @@
 // magnitude * I_ltc(P) of the shipped GGX table (ltc::ggx::fetch; F0 = 1, i.e. no Fresnel,
 // like the ground truth; with --f0 F0 both take Schlick's factor instead, the integral of
 // rho cos (F0 + (1 - F0) (1 - V.H)^5) and (F0 magnitude + (1 - F0) fresnel) I_ltc(P): --f0 0.04
-// is a dielectric's specular term, mostly the Fresnel part) with each horizon-clipping method of ltc/shading/polygon_light.hpp:
+// is a dielectric's specular term, largely the Fresnel part at grazing views) with each horizon-clipping method of ltc/shading/polygon_light.hpp:
 //
 //   exact        horizon_clipping::ltc_space: the paper's order, exact integral of the LTC
 //   clip-first   horizon_clipping::shading_first: clip to the shading horizon, then M^-1
@@ -80,6 +80,15 @@ using namespace ggx_error_report;  // the pieces above
 
 namespace {
 
+/// A number in [0, 1] that is the whole of s (strtod, its end checked); false leaves x alone.
+bool parse_unit(const char* s, double& x) {
+    char* end = nullptr;
+    const double v = std::strtod(s, &end);
+    if (end == s || *end != '\0' || !(v >= 0 && v <= 1)) return false;
+    x = v;
+    return true;
+}
+
 std::vector<std::string> parse_names(const std::string& s) {
     std::vector<std::string> r;
     std::size_t b = 0;
@@ -127,8 +136,8 @@ int main(int argc, char** argv) {
             threads = unsigned(std::max(1, std::atoi(argv[++i])));
         else if (a == "--grid" && i + 1 < argc && (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off"))
             which_grid = std::string(argv[++i]) == "off" ? 1 : 0;
-        else if (a == "--f0" && i + 1 < argc && std::atof(argv[i + 1]) >= 0 && std::atof(argv[i + 1]) <= 1)
-            report_f0 = std::atof(argv[++i]);
+        else if (a == "--f0" && i + 1 < argc && parse_unit(argv[i + 1], report_f0))
+            ++i;
         else if (a == "--list")
             list = true;
         else {

@@ -21,8 +21,8 @@
 // weighs by 1 - F0) is split between the lobes by a fit of its own once the lobes are fitted
 // (detail::fresnel_share_of: a least-squares share in closed form), not by the magnitude's share s:
 // its integrand weighs other parts of the lobe. With the magnitude's share a dielectric's (F0 =
-// 0.04) specular term was 21.7% (LTC and cosine) and 23.1% (two LTCs) off on
-// examples/ggx_error_report's grid (--f0 0.04), with its own 14.9% and 13.5% (one lobe: 24.7%).
+// 0.04) specular term was 21.7% (LTC and cosine) and 23.1% (two LTCs) off on the lights of
+// examples/ggx_error_report's grid (--f0 0.04), with its own split 14.9% and 13.5% (one lobe: 24.7%).
 //
 // Robustness: a lobe left with almost no share is dropped (fit_two_lobes), and the table's nodes
 // that land on a plateau of the objective are refitted from their one-lobe fit as a single lobe
@@ -230,20 +230,25 @@ namespace detail {
 /// the least-squares split of the integral loss of ltc/fitting/integral_objective.hpp applied to
 /// the Fresnel part of f, rho cos (1 - V.H)^5, over the node's family,
 ///   min over s_F in [0, 1] of sum_k ((F ((1 - s_F) I_1k + s_F I_2k) - G_k) / (G_k + floor F))^2,
-/// F the fresnel channel (its total over the hemisphere, which any split keeps, since each lobe
-/// integrates to 1 there), G_k the Fresnel part's integrals (brdf::fresnel_part,
-/// ltc/fitting/brdf/schlick.hpp), I_lk lobe l's.
-/// Closed form: s_F = sum a_k b_k / sum a_k^2, a_k = F (I_2k - I_1k) / w_k, b_k = (G_k - F I_1k) / w_k.
-/// The Fresnel part weighs the lobe's far side from the mirror direction (V.H small) more than
-/// f does, so the magnitude's split s need not suit it; with s_F = s (the two-LTC table) a
-/// dielectric's specular term, 96% Fresnel part, inherits the magnitude's split.
-/// Where the second lobe is dropped (s = 0: a copy of the first), s_F = s.
-template <template <typename> class Brdf>
-double fresnel_share_of(const glm::dvec3& V, double alpha, const glm::dvec3& axis, const two_lobe_result& r) {
+/// F the fresnel channel (the Fresnel part's integral over the hemisphere, which the two lobes'
+/// channels, F (1 - s_F) and F s_F, add up to whatever the split; the lobes themselves hold
+/// (1 + cos beta) / 2 <= 1 of their mass above the horizon, beta the angle of M's third row to
+/// z, so the shading's Fresnel energy over the whole hemisphere does move with s_F, as its
+/// magnitude's does with s), G_k the Fresnel part's integrals (brdf::fresnel_part,
+/// ltc/fitting/brdf/schlick.hpp), I_lk lobe l's (exact edge terms: once per node, their cost
+/// does not matter here).
+/// Closed form of this convex quadratic in s_F: s_F = sum a_k b_k / sum a_k^2, a_k =
+/// F (I_2k - I_1k) / w_k, b_k = (G_k - F I_1k) / w_k, clamped to [0, 1] (the constrained
+/// optimum). (1 - V.H)^5 grows with the angle between V and L, so the Fresnel part weighs the
+/// lobe's directions farthest from V, towards the horizon beyond the mirror direction, more than
+/// f does, and the magnitude's split s need not suit it (before this fit both tables used s_F =
+/// s). The clamp binds at most nodes of the shipped tables (859 of 1024 with the cosine, 671 of
+/// the two-LTC table's 832 nodes that keep both lobes): mostly the whole Fresnel term on one
+/// lobe, which can change between neighbouring nodes. Where the lobes coincide (a dropped lobe:
+/// s = 0, or s = 1 with two LTCs) s_F = s.
+/// `t`: the Fresnel part's targets over the node's family (make_integral_targets_with_fresnel).
+inline double fresnel_share_of(const integral_targets& t, const two_lobe_result& r) {
     if (!(r.share > 0) || !(r.fresnel > 0)) return r.share;
-    const integral_targets t = make_integral_targets<brdf::fresnel_part<Brdf>::template model>(
-        V, alpha, axis, r.fresnel,
-        r.model == two_lobe_model::ltc_and_cosine ? integral_family::spiral() : integral_family::rings());
     std::vector<double> i1(t.polygons.size()), i2(t.polygons.size());
     ltc_integrals(t, r.m_inv[0], i1.data());
     ltc_integrals(t, r.m_inv[1], i2.data());
@@ -287,8 +292,10 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     const bool with_cosine = start.model == two_lobe_model::ltc_and_cosine;
     if (with_cosine) r.lobes[0] = ltc_parameters{}, refit_first = false;  // M_1 = I, about the normal
 
-    const integral_targets targets = make_integral_targets<Brdf>(
-        V, alpha, axis, mom.magnitude, with_cosine ? integral_family::spiral() : integral_family::rings());
+    // The Fresnel part's targets come from the same pass of the quadrature (fresnel_share_of).
+    const auto both = make_integral_targets_with_fresnel<Brdf>(
+        V, alpha, axis, mom.magnitude, mom.fresnel, with_cosine ? integral_family::spiral() : integral_family::rings());
+    const integral_targets& targets = both.first;
     std::vector<double> i1(targets.polygons.size()), i2(targets.polygons.size());
     detail::mixture_samples samples;
 
@@ -381,7 +388,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     if (r.share < dead) r.lobes[1] = r.lobes[0], r.share = 0;
     if (r.share > 1 - dead && !with_cosine) r.lobes[0] = r.lobes[1], r.share = 1;
     for (int l = 0; l < 2; ++l) r.m_inv[std::size_t(l)] = normalized_inverse(r.lobes[std::size_t(l)].matrix());
-    r.fresnel_share = detail::fresnel_share_of<Brdf>(V, alpha, axis, r);
+    r.fresnel_share = detail::fresnel_share_of(both.second, r);
     return r;
 }
 
@@ -413,12 +420,16 @@ struct two_lobe_table {
     /// the flattened matrix to half the magnitude: -37% on a light at the zenith (roughness 0.84,
     /// theta_v 1.3 deg; tests/test_cosine_lobe.cpp). Subnormal values are flushed to 0, and a
     /// lobe whose magnitude channel flushes to 0 stores a zero matrix too (so that every lookup
-    /// stays a convex combination of the nodes' matrices).
+    /// stays a convex combination of the nodes' matrices), and gives its Fresnel term to the
+    /// cosine (a zero matrix reads as the cosine: ltc::ggx_cosine_lobe::unpremultiplied).
     std::vector<float> packed() const {
         const bool premultiply = model == two_lobe_model::ltc_and_cosine;
         const auto flushed = [&](double x) {
             const float f = float(x);
             return premultiply && std::abs(f) < std::numeric_limits<float>::min() ? 0.0f : f;
+        };
+        const auto dead_ltc = [&](const two_lobe_result& n) {
+            return premultiply && flushed(n.magnitude * n.share) == 0.0f;
         };
         std::vector<float> d;
         d.reserve(2 * nodes.size() * channel::count);
@@ -426,14 +437,15 @@ struct two_lobe_table {
             for (const two_lobe_result& n : nodes) {
                 const glm::dmat3& m = n.m_inv[std::size_t(l)];
                 const double w = l == 0 ? 1 - n.share : n.share;
-                const bool dead = premultiply && l == 1 && flushed(n.magnitude * w) == 0.0f;
+                const bool dead = l == 1 && dead_ltc(n);
+                const double fresnel_share = dead_ltc(n) ? 0.0 : n.fresnel_share;
                 const double p = dead ? 0.0 : premultiply && l == 1 ? n.magnitude * w : 1.0;
                 d.push_back(flushed(m[0][0] * p));
                 d.push_back(flushed(m[0][2] * p));
                 d.push_back(flushed(m[2][0] * p));
                 d.push_back(flushed(m[2][2] * p));
                 d.push_back(flushed(n.magnitude * w));
-                d.push_back(flushed(n.fresnel * (l == 0 ? 1 - n.fresnel_share : n.fresnel_share)));
+                d.push_back(flushed(n.fresnel * (l == 0 ? 1 - fresnel_share : fresnel_share)));
             }
         return d;
     }

@@ -48,6 +48,10 @@
 // into 6 triangles; density on the sphere 1 / (A (L.c)^3), A the planar area):
 //   G_k = sum_{brdf i, L_i in P_k} f_i / (N_b p_b + N_k p_k) + sum_{poly j} f_j / (N_b p_b + N_k p_k).
 // Polygons with G_k < 1e-3 magnitude are dropped (the error report's significance threshold).
+// The same samples also give the integrals of the Fresnel part, f (1 - V.H)^5 in place of f
+// (make_integral_targets_with_fresnel), for the two-lobe fits' split of the Fresnel term: within
+// 6% of the ground truth on both families' hexagons (tests/test_fit_objective.cpp: 5.15% worst,
+// on the spiral).
 // The loss is the mean squared relative error with a floor f of the magnitude (the albedo) in
 // the denominator, (1/K) sum_k ((m I_k - G_k) / (G_k + f m_0))^2, m_0 the node's magnitude. With
 // the rings f = 1%: without the floor the faint tails (which a single lobe cannot follow
@@ -62,6 +66,7 @@
 
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
+#include <ltc/fitting/brdf/schlick.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>
 
 #include <glm/glm.hpp>
@@ -70,6 +75,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace ltc {
@@ -208,20 +214,26 @@ struct integral_targets {
     double floor = integral_family{}.floor;  ///< the loss's floor, a fraction of the magnitude
 };
 
-/// For the view V, roughness alpha, the lobe's average direction `axis` and magnitude: the
-/// polygons of `which` (its covering; its floor goes into the targets), n_b x n_b BRDF samples,
-/// 6 m x m samples per polygon. For the rings, 64, 8: about 1.3 ms per node, within 2.7% of the
-/// Monte Carlo ground truth on every polygon of 9 nodes (theta_v 0 / 60 / 80 deg x roughness
-/// 0.25 / 0.5 / 1); 64, 12 is within 1.4% at twice the cost, and fits tables of the same error
-/// (examples/ggx_error_report, section 8: 6.95% either way).
+namespace detail {
+
+/// The quadrature's sums G_k over `family` (file comment) of f = Brdf::eval, and, with `fresnel`
+/// not null, of f (1 - V.H)^5 (brdf::schlick_weight, the Fresnel part) from the same samples in
+/// the same pass: each sum is the one make_integral_targets gives for Brdf, or for
+/// brdf::fresnel_part<Brdf>, bit for bit.
 template <template <typename> class Brdf>
-integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude,
-                                       int n_b = default_brdf_samples, int m = default_polygon_samples,
-                                       const integral_family& which = integral_family::rings()) {
+void family_integrals(const glm::dvec3& V, double alpha, const std::vector<family_polygon>& family, int n_b, int m,
+                      std::vector<double>& g, std::vector<double>* fresnel) {
     using B = Brdf<double>;
-    const std::vector<family_polygon> family = polygon_family(axis, alpha, which.covering);
     const double N_b = double(n_b) * double(n_b), N_p = 6.0 * double(m) * double(m);
-    std::vector<double> g(family.size(), 0.0);
+    g.assign(family.size(), 0.0);
+    if (fresnel) fresnel->assign(family.size(), 0.0);
+    const auto add = [&](std::size_t k, const glm::dvec3& L, double f, double denominator) {
+        g[k] += f / denominator;
+        if (fresnel) {
+            const double ff = f * brdf::schlick_weight(V, L);
+            if (ff > 0 && std::isfinite(ff)) (*fresnel)[k] += ff / denominator;
+        }
+    };
     // Technique 1: the BRDF's sampler, shared by all polygons.
     for (int j = 0; j < n_b; ++j)
         for (int i = 0; i < n_b; ++i) {
@@ -232,7 +244,7 @@ integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const 
             if (!(f > 0) || !std::isfinite(f)) continue;
             for (std::size_t k = 0; k < family.size(); ++k) {
                 const double pk = family[k].pdf(L);
-                if (pk > 0) g[k] += f / (N_b * pb + N_p * pk);
+                if (pk > 0) add(k, L, f, N_b * pb + N_p * pk);
             }
         }
     // Technique 2: uniform in each polygon's gnomonic projection (6 triangles (0, P_k, P_k+1)).
@@ -252,19 +264,59 @@ integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const 
                     if (!(f > 0) || !std::isfinite(f)) continue;
                     const double c = glm::dot(L, p.centre);
                     const double pk = 1.0 / (p.planar_area * c * c * c);
-                    g[k] += f / (N_b * B::pdf(V, L, alpha) + N_p * pk);
+                    add(k, L, f, N_b * B::pdf(V, L, alpha) + N_p * pk);
                 }
         }
     }
+}
+
+/// The targets: the polygons of `family` whose sum g_k is at least the significance threshold
+/// times `magnitude` (and finite), with their sums, the magnitude and the loss's floor.
+inline integral_targets significant_targets(const std::vector<family_polygon>& family, const std::vector<double>& g,
+                                            double magnitude, double floor) {
     integral_targets r;
     r.magnitude = magnitude;
-    r.floor = which.floor;
+    r.floor = floor;
     for (std::size_t k = 0; k < family.size(); ++k)
         if (g[k] >= significance_threshold * magnitude && std::isfinite(g[k])) {
             r.polygons.push_back(family[k]);
             r.ggx.push_back(g[k]);
         }
     return r;
+}
+
+}  // namespace detail
+
+/// For the view V, roughness alpha, the lobe's average direction `axis` and magnitude: the
+/// polygons of `which` (its covering; its floor goes into the targets), n_b x n_b BRDF samples,
+/// 6 m x m samples per polygon. For the rings, 64, 8: about 1.3 ms per node, within 2.7% of the
+/// Monte Carlo ground truth on every polygon of 9 nodes (theta_v 0 / 60 / 80 deg x roughness
+/// 0.25 / 0.5 / 1); 64, 12 is within 1.4% at twice the cost, and fits tables of the same error
+/// (examples/ggx_error_report, section 8: 6.95% either way).
+template <template <typename> class Brdf>
+integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude,
+                                       int n_b = default_brdf_samples, int m = default_polygon_samples,
+                                       const integral_family& which = integral_family::rings()) {
+    const std::vector<family_polygon> family = polygon_family(axis, alpha, which.covering);
+    std::vector<double> g;
+    detail::family_integrals<Brdf>(V, alpha, family, n_b, m, g, nullptr);
+    return detail::significant_targets(family, g, magnitude, which.floor);
+}
+
+/// The targets of f (first) and of its Fresnel part f (1 - V.H)^5 (second: magnitude `fresnel`,
+/// the integral of the Fresnel part over the hemisphere, in the place of the magnitude) over the
+/// same family, from one pass of the quadrature (the two-lobe fits' split of the Fresnel term,
+/// ltc/fitting/fit_two_lobes.hpp): each the same bits as make_integral_targets gives for Brdf and
+/// for brdf::fresnel_part<Brdf>, at about the cost of one.
+template <template <typename> class Brdf>
+std::pair<integral_targets, integral_targets> make_integral_targets_with_fresnel(
+    const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude, double fresnel,
+    const integral_family& which, int n_b = default_brdf_samples, int m = default_polygon_samples) {
+    const std::vector<family_polygon> family = polygon_family(axis, alpha, which.covering);
+    std::vector<double> g, g_fresnel;
+    detail::family_integrals<Brdf>(V, alpha, family, n_b, m, g, &g_fresnel);
+    return {detail::significant_targets(family, g, magnitude, which.floor),
+            detail::significant_targets(family, g_fresnel, fresnel, which.floor)};
 }
 
 /// The targets of `which` with the default quadrature: what the fits use.

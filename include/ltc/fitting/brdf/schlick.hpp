@@ -5,7 +5,7 @@
 //
 //   fresnel_part<ggx>::model<T>   f (1 - V.H)^5, static members like any model (F0 = 0): what
 //                                 the two-lobe fits split between their lobes
-//                                 (ltc/fitting/fit_two_lobes.hpp, fresnel_share)
+//                                 (ltc/fitting/fit_two_lobes.hpp, fresnel_share_of)
 //   with_schlick<ggx>{F0}         f F, an instance for ltc::ground_truth::integrate (the
 //                                 specular term of a colour channel with specular colour F0)
 //
