@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -48,6 +49,35 @@ lobe_errors errors_against_truth(double theta, double r, const std::vector<dvec3
     CAPTURE(theta, r, seed, gt.mean, gt.standard_error, one.specular.x, o.specular.x, e.one, e.other);
     CHECK(gt.standard_error <= 0.005 * gt.mean);
     return e;
+}
+
+/// Mean and worst |LTC - GT| / GT, of the one-lobe shading and of another, over some lights.
+struct lobe_error_summary {
+    double mean_one = 0, mean_other = 0, worst_one = 0, worst_other = 0;
+};
+
+/// The grazing test's 12 lights (tests/test_two_lobe.cpp): theta_v in {70, 80} deg, roughness in
+/// {0.3, 0.5}, and three 0.5 x 0.25 rectangles facing the origin at distance 1: "mirror"
+/// (azimuth 180 deg, elevation 90 - theta_v), "zenith" (elevation 80 deg, azimuth 0) and "side"
+/// (azimuth 90, elevation 30); seeds 7000, 7001, ... in that order. `errors(theta, r, L, seed)`
+/// returns a lobe_errors (errors_against_truth with the other shading and a specular colour).
+template <typename Errors>
+lobe_error_summary grazing_light_errors(Errors&& errors) {
+    lobe_error_summary s;
+    int count = 0;
+    for (const double theta : {70.0, 80.0})
+        for (const double r : {0.3, 0.5}) {
+            const std::vector<dvec3> lights[] = {facing_rectangle(180, 90 - theta, 0.5, 0.25), facing_rectangle(0, 80, 0.5, 0.25),
+                                                 facing_rectangle(90, 30, 0.5, 0.25)};
+            for (const auto& L : lights) {
+                const lobe_errors e = errors(theta, r, L, 7000 + std::uint64_t(count));
+                s.mean_one += e.one, s.mean_other += e.other;
+                s.worst_one = std::max(s.worst_one, e.one), s.worst_other = std::max(s.worst_other, e.other);
+                ++count;
+            }
+        }
+    s.mean_one /= count, s.mean_other /= count;
+    return s;
 }
 
 }  // namespace ltc_test::shading_checks
