@@ -227,13 +227,12 @@ void family_integrals(const glm::dvec3& V, double alpha, const std::vector<famil
     const double N_b = double(n_b) * double(n_b), N_p = 6.0 * double(m) * double(m);
     g.assign(family.size(), 0.0);
     if (fresnel) fresnel->assign(family.size(), 0.0);
-    const auto add = [&](std::size_t k, const glm::dvec3& L, double f, double denominator) {
+    // f_fresnel = f (1 - V.H)^5, once per sample; f > 0 and finite, so it is finite and >= 0.
+    const auto add = [&](std::size_t k, double f, double f_fresnel, double denominator) {
         g[k] += f / denominator;
-        if (fresnel) {
-            const double ff = f * brdf::schlick_weight(V, L);
-            if (ff > 0 && std::isfinite(ff)) (*fresnel)[k] += ff / denominator;
-        }
+        if (fresnel) (*fresnel)[k] += f_fresnel / denominator;
     };
+    const auto fresnel_part = [&](const glm::dvec3& L, double f) { return fresnel ? f * brdf::schlick_weight(V, L) : 0.0; };
     // Technique 1: the BRDF's sampler, shared by all polygons.
     for (int j = 0; j < n_b; ++j)
         for (int i = 0; i < n_b; ++i) {
@@ -242,9 +241,10 @@ void family_integrals(const glm::dvec3& V, double alpha, const std::vector<famil
             const double f = B::eval(V, L, alpha);
             const double pb = B::pdf(V, L, alpha);
             if (!(f > 0) || !std::isfinite(f)) continue;
+            const double ff = fresnel_part(L, f);
             for (std::size_t k = 0; k < family.size(); ++k) {
                 const double pk = family[k].pdf(L);
-                if (pk > 0) add(k, L, f, N_b * pb + N_p * pk);
+                if (pk > 0) add(k, f, ff, N_b * pb + N_p * pk);
             }
         }
     // Technique 2: uniform in each polygon's gnomonic projection (6 triangles (0, P_k, P_k+1)).
@@ -264,7 +264,7 @@ void family_integrals(const glm::dvec3& V, double alpha, const std::vector<famil
                     if (!(f > 0) || !std::isfinite(f)) continue;
                     const double c = glm::dot(L, p.centre);
                     const double pk = 1.0 / (p.planar_area * c * c * c);
-                    add(k, L, f, N_b * B::pdf(V, L, alpha) + N_p * pk);
+                    add(k, f, fresnel_part(L, f), N_b * B::pdf(V, L, alpha) + N_p * pk);
                 }
         }
     }
