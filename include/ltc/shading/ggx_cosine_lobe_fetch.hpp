@@ -63,7 +63,7 @@ template <typename T>
 inline std::array<ltc_coefficients<T>, 2> fetch(T cos_theta_v, T roughness) {
     const ltc_table cosine = lobe_table(0), lobe = lobe_table(1);
     const auto at = cosine.locate(cos_theta_v, roughness);  // the same nodes in both (size x size)
-    return {cosine.fetch_at(at), unpremultiplied(lobe.fetch_at(at))};
+    return {cosine.fetch_scale_at(at), unpremultiplied(lobe.fetch_at(at))};  // the cosine's matrix: stored as I
 }
 
 }  // namespace ggx_cosine_lobe

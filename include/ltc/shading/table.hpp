@@ -182,6 +182,19 @@ class ltc_table {
         return r;
     }
 
+    /// The magnitude and the Fresnel term alone at a position from locate, m_inv the identity: for
+    /// a lobe whose matrix is fixed (the clamped cosine of ggx_cosine_lobe::fetch), a third of
+    /// fetch_at's reads, each channel the bits fetch_at gives.
+    template <typename T>
+    ltc_coefficients<T> fetch_scale_at(const position<T>& at) const {
+        T value[channels];
+        interpolate(at, value, channel::magnitude);
+        ltc_coefficients<T> r;  // m_inv: the identity
+        r.magnitude = value[channel::magnitude];
+        r.fresnel = value[channel::fresnel];
+        return r;
+    }
+
   private:
     template <typename T>
     position<T> locate_nodes(T su, T sv, T tol_u, T tol_v) const {
@@ -193,9 +206,10 @@ class ltc_table {
         return p;
     }
 
+    /// out[c] for the channels c from `first` on.
     template <typename T>
-    void interpolate(const position<T>& p, T* out) const {
-        for (int c = 0; c < channels; ++c) {
+    void interpolate(const position<T>& p, T* out, int first = 0) const {
+        for (int c = first; c < channels; ++c) {
             // (1 - f) v0 + f v1: exactly v0 at f = 0 and v1 at f = 1, the mean at f = 1/2.
             const T lo = (T(1) - p.fu) * T(node(p.t0, p.a0, c)) + p.fu * T(node(p.t1, p.a0, c));
             const T hi = (T(1) - p.fu) * T(node(p.t0, p.a1, c)) + p.fu * T(node(p.t1, p.a1, c));
