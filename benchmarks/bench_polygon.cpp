@@ -196,7 +196,8 @@ ltc::polygon_light_result<T> ggx_shade(const typed_config<T>& c, std::size_t i) 
     const vec3 P(0), N(0, 0, 1), F0(T(0.04)), albedo(T(0.5)), radiance(1);
     const T t = T((i & 63) + 1) / T(64);
     const vec3 V = glm::normalize(vec3(t, T(0.1), T(1)));
-    return ltc::shade_polygon_light<Policy>(P, N, V, t, F0, albedo, radiance, c.quad, 4, ltc::sidedness::two_sided);
+    return ltc::shade_polygon_light_one_lobe<Policy>(P, N, V, t, F0, albedo, radiance, c.quad, 4,
+                                                     ltc::sidedness::two_sided);
 }
 
 template <typename T, typename Policy>

@@ -9,9 +9,10 @@
 //   *_setup        building the sampler for a polygon (clipping, fan, per-triangle constants)
 //   area           ltc::polygon_area_sampler: uniform on the light's area, with its solid-angle pdf
 //   ggx_brdf       GGX visible-normal sampling with its pdf (ltc/fitting/brdf/ggx.hpp)
-//   shade          ltc::shade_polygon_light (no shadows), and shade_polygon_light_shadowed with
-//                  K = 4 and 16 samples per lobe for both samplers, visibility always true (the
-//                  shading's own cost, without the ray tracer's)
+//   shade          ltc::shade_polygon_light_one_lobe (no shadows; the shadowed shading's default
+//                  table), and shade_polygon_light_shadowed with K = 4 and 16 samples per lobe
+//                  for both samplers, visibility always true (the shading's own cost, without the
+//                  ray tracer's)
 // time_per_item is per sample (or per polygon for *_setup, per shading call for shade_*):
 //   ./build/benchmarks/bench_sampling --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //       --benchmark_enable_random_interleaving=true
@@ -157,8 +158,8 @@ void shade(benchmark::State& state) {
     const scene& s = the_scene();
     for (auto _ : state)
         for (const config& c : s.items)
-            benchmark::DoNotOptimize(ltc::shade_polygon_light(c.P, c.N, c.V, c.roughness, s.F0, s.albedo, s.radiance,
-                                                              s.quad, 4, ltc::sidedness::one_sided));
+            benchmark::DoNotOptimize(ltc::shade_polygon_light_one_lobe(c.P, c.N, c.V, c.roughness, s.F0, s.albedo,
+                                                                       s.radiance, s.quad, 4, ltc::sidedness::one_sided));
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
 }
 

@@ -1,13 +1,15 @@
 // GGX shading of one quad light over 4096 shading points (a renderer's pass over its pixels):
 // the reference shader's shading (reference_shading.hpp: frame, two bilinear fetches, two
-// 16-case-clipped integrals), ltc::shade_polygon_light point by point, and
-// ltc::batch::shade_polygon_light (one point per SIMD lane); and one point shaded by 4096 quad
-// lights (ltc::batch::shade_quad_lights); and ltc::shade_polygon_light_two_lobe point by point and
-// ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table), and
-// ltc::shade_polygon_light_cosine_lobe point by point and in batches (the opt-in table of an LTC
-// and the cosine), with the quad-light batches of both: their costs against the one-lobe ones, no
-// error counters since they are other approximations. Items/s plus, as counters, the maximum absolute and
-// relative error of specular + diffuse (red) against ltc::shade_polygon_light in double with the
+// 16-case-clipped integrals), ltc::shade_polygon_light_one_lobe point by point (BM_library_scalar),
+// and ltc::batch::shade_polygon_light_one_lobe (one point per SIMD lane); and one point shaded by
+// 4096 quad lights (ltc::batch::shade_quad_lights_one_lobe); and ltc::shade_polygon_light_two_lobe
+// point by point and ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table), and
+// ltc::shade_polygon_light_cosine_lobe point by point and in batches (the table of an LTC and the
+// cosine: ltc::shade_polygon_light, ltc::batch::shade_polygon_light and shade_quad_lights, the
+// defaults, are these functions), with the quad-light batches of both: their costs against the
+// one-lobe ones, no error counters since they are other approximations. Items/s plus, as
+// counters, the maximum absolute and relative error of specular + diffuse (red) against
+// ltc::shade_polygon_light_one_lobe in double with the
 // exact edge policy: the precision each float path loses, not the LTC approximation's own error.
 //
 // The points: a 64 x 64 grid on the floor z = 0 of a room, normals tilted up to 30 degrees from
@@ -77,7 +79,7 @@ const std::vector<double>& exact() {
         for (int k = 0; k < 4; ++k) L[k] = glm::dvec3(s.light[k]);
         std::vector<double> v;
         for (std::size_t i = 0; i < kItems; ++i) {
-            const auto r = ltc::shade_polygon_light<ltc::edge_policy::exact>(
+            const auto r = ltc::shade_polygon_light_one_lobe<ltc::edge_policy::exact>(
                 glm::dvec3(s.vec(0, i)), glm::dvec3(s.vec(3, i)), glm::dvec3(s.vec(6, i)), double(s.a[9][i]),
                 glm::dvec3(s.vec(10, i)), glm::dvec3(s.vec(13, i)), glm::dvec3(s.radiance), L, 4,
                 ltc::sidedness::two_sided);
@@ -121,8 +123,9 @@ void BM_library_scalar(benchmark::State& state) {
     std::vector<float> red(kItems);
     for (auto _ : state) {
         for (std::size_t i = 0; i < kItems; ++i) {
-            const auto r = ltc::shade_polygon_light<Policy>(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i),
-                                                            s.vec(13, i), s.radiance, s.light, 4, ltc::sidedness::two_sided);
+            const auto r = ltc::shade_polygon_light_one_lobe<Policy>(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i],
+                                                                     s.vec(10, i), s.vec(13, i), s.radiance, s.light, 4,
+                                                                     ltc::sidedness::two_sided);
             red[i] = r.specular.x + r.diffuse.x;
         }
         benchmark::DoNotOptimize(red.data());
@@ -189,7 +192,8 @@ void BM_batch_shading(benchmark::State& state) {
     outputs out;
     const auto results = out.results();
     for (auto _ : state) {
-        ltc::batch::shade_polygon_light(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results, kItems, Isa);
+        ltc::batch::shade_polygon_light_one_lobe(points, s.radiance, s.light, 4, ltc::sidedness::two_sided, results, kItems,
+                                                 Isa);
         benchmark::DoNotOptimize(out.c[0].data());
         benchmark::ClobberMemory();
     }
@@ -246,8 +250,8 @@ void BM_batch_quad_lights(benchmark::State& state) {
             ltc::batch::shade_quad_lights_cosine_lobe(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i),
                                                       s.vec(13, i), lights, ltc::sidedness::two_sided, results, kItems);
         else if (Lobes == 1)
-            ltc::batch::shade_quad_lights(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i), lights,
-                                          ltc::sidedness::two_sided, results, kItems);
+            ltc::batch::shade_quad_lights_one_lobe(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i),
+                                                   s.vec(13, i), lights, ltc::sidedness::two_sided, results, kItems);
         else
             ltc::batch::shade_quad_lights_two_lobe(s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i),
                                                    s.vec(13, i), lights, ltc::sidedness::two_sided, results, kItems);

@@ -3,7 +3,8 @@
 // of a room, normals tilted up to 30 degrees, seen from a camera at (0, -4, 2), roughness 0.05-1
 // over the grid). The lights, all centred at (0, 0, 1.2) and tilted by 60 degrees about x, so
 // that they cross the horizon of part of the points:
-//   quad     ltc::shade_polygon_light, a 1.2 x 1.2 square, one-sided (the reference for speed);
+//   quad     ltc::shade_polygon_light_one_lobe, a 1.2 x 1.2 square, one-sided (the reference for speed:
+//            the shapes' table);
 //   disk     ltc::shade_disk_light, radius 0.6, one-sided; disk_2017 the same call with
 //            integrate_disk_2017 for both terms; disk_polygon_16 integrate_disk_polygon, 16 edges;
 //   sphere   ltc::shade_sphere_light, radius 0.6;
@@ -106,8 +107,8 @@ ltc::polygon_light_result<float> shade_disk_with(const scene& s, const point& p,
 
 void BM_quad(benchmark::State& state) {
     run(state, [](const scene& s, const point& p) {
-        return ltc::shade_polygon_light(p.P, p.N, p.V, p.roughness, s.F0, s.albedo, s.radiance, s.quad, 4,
-                                        ltc::sidedness::one_sided);
+        return ltc::shade_polygon_light_one_lobe(p.P, p.N, p.V, p.roughness, s.F0, s.albedo, s.radiance, s.quad, 4,
+                                                 ltc::sidedness::one_sided);
     });
 }
 

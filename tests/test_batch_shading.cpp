@@ -129,8 +129,8 @@ std::size_t violations(const ltc::polygon_light_result<float>& got, const ltc::p
 
 namespace {
 
-// One light over many points with the sum of the LTCs of Lobes tables: one table (the GGX table
-// through batch::shade_polygon_light, or any through shade_polygon_light_with_table), or, with
+// One light over many points with the sum of the LTCs of Lobes tables: one table (the one-lobe GGX
+// table through batch::shade_polygon_light_one_lobe, or any through shade_polygon_light_with_table), or, with
 // Lobes = 2, the two lobes of the GGX two-lobe table (batch::shade_polygon_light_two_lobe; tables
 // must be its lobe tables), against the scalar shading with the kernel's frame and each lobe's
 // coefficients. With two lobes the specular terms add: their tolerances add, plus 2 u of the sum
@@ -166,7 +166,8 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                     ltc::batch::shade_polygon_light_two_lobe<Policy>(pts.view(), radiance, light.data(), n, side,
                                                                      out.view(), count, isa);
                 else if (ggx)
-                    ltc::batch::shade_polygon_light<Policy>(pts.view(), radiance, light.data(), n, side, out.view(), count, isa);
+                    ltc::batch::shade_polygon_light_one_lobe<Policy>(pts.view(), radiance, light.data(), n, side, out.view(),
+                                                                     count, isa);
                 else
                     ltc::batch::shade_polygon_light_with_table<Policy>(*tables[0], pts.view(), radiance, light.data(), n,
                                                                        side, out.view(), count, isa);
@@ -241,7 +242,7 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
 
 }  // namespace
 
-TEST_CASE("batch shading of one light matches shade_polygon_light point by point", "[batch][shading]") {
+TEST_CASE("one-lobe batch shading of one light matches shade_polygon_light_one_lobe point by point", "[batch][shading]") {
     const ltc::ltc_table* const tables[1] = {&ltc::ggx::table};
     check_lights_over_points(tables, true);
 }
@@ -324,14 +325,17 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
     for (const auto isa : ltc::batch::instruction_sets) {
         if (!ltc::batch::available(isa)) continue;
         for (const std::size_t n : {2u, 4u})
-            for (const int lobes : {1, 2, 3}) {  // batch::shade_polygon_light, _two_lobe, _cosine_lobe
+            for (const int lobes : {0, 1, 2, 3}) {  // batch::shade_polygon_light, _one_lobe, _two_lobe, _cosine_lobe
                 results_soa out(count);
-                if (lobes == 3)
+                if (lobes == 0)
+                    ltc::batch::shade_polygon_light<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
+                                                            ltc::sidedness::two_sided, out.view(), count, isa);
+                else if (lobes == 3)
                     ltc::batch::shade_polygon_light_cosine_lobe<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
                                                                         ltc::sidedness::two_sided, out.view(), count, isa);
                 else if (lobes == 1)
-                    ltc::batch::shade_polygon_light<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
-                                                            ltc::sidedness::two_sided, out.view(), count, isa);
+                    ltc::batch::shade_polygon_light_one_lobe<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
+                                                                     ltc::sidedness::two_sided, out.view(), count, isa);
                 else
                     ltc::batch::shade_polygon_light_two_lobe<Policy>(pts.view(), glm::vec3(1.0f), light.data(), n,
                                                                      ltc::sidedness::two_sided, out.view(), count, isa);
@@ -341,10 +345,12 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
                     const float r = pts.a[9][i];
                     const auto side = ltc::sidedness::two_sided;
                     const auto want =
-                        lobes == 3 ? ltc::shade_polygon_light_cosine_lobe<Policy>(P, N, V, r, F0, albedo, radiance,
-                                                                                 light.data(), n, side)
+                        lobes == 0 ? ltc::shade_polygon_light<Policy>(P, N, V, r, F0, albedo, radiance, light.data(), n, side)
+                        : lobes == 3 ? ltc::shade_polygon_light_cosine_lobe<Policy>(P, N, V, r, F0, albedo, radiance,
+                                                                                   light.data(), n, side)
                         : lobes == 1
-                            ? ltc::shade_polygon_light<Policy>(P, N, V, r, F0, albedo, radiance, light.data(), n, side)
+                            ? ltc::shade_polygon_light_one_lobe<Policy>(P, N, V, r, F0, albedo, radiance, light.data(), n,
+                                                                        side)
                             : ltc::shade_polygon_light_two_lobe<Policy>(P, N, V, r, F0, albedo, radiance, light.data(), n,
                                                                         side);
                     const auto got = out.at(i);
@@ -366,7 +372,7 @@ TEST_CASE("batch shading: degenerate points and lights give the scalar function'
 
 namespace {
 
-// Many quad lights over one point, with the GGX table (lobes = 1: shade_quad_lights) or the
+// Many quad lights over one point, with the one-lobe GGX table (lobes = 1: shade_quad_lights_one_lobe) or the
 // two-lobe table (lobes = 2: shade_quad_lights_two_lobe), against the scalar shading light by
 // light. With two lobes the frame and the fetch are the scalar ones, so the specular tolerance
 // is the sum of the two lobes' (each lobe's I_ltc within its own), the diffuse one lobe 1's.
@@ -398,7 +404,8 @@ void check_quad_lights(int lobes) {
                     ltc::batch::shade_quad_lights_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side,
                                                                       out.view(), count, isa);
                 else if (lobes == 1)
-                    ltc::batch::shade_quad_lights<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(), count, isa);
+                    ltc::batch::shade_quad_lights_one_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(),
+                                                                   count, isa);
                 else
                     ltc::batch::shade_quad_lights_two_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side, out.view(),
                                                                    count, isa);
@@ -414,8 +421,8 @@ void check_quad_lights(int lobes) {
                     const auto want =
                         lobes == 3 ? ltc::shade_polygon_light_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance,
                                                                                  quads[j].data(), 4, side)
-                        : lobes == 1 ? ltc::shade_polygon_light<Policy>(P, N, V, roughness, F0, albedo, radiance, quads[j].data(),
-                                                                      4, side)
+                        : lobes == 1 ? ltc::shade_polygon_light_one_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance,
+                                                                               quads[j].data(), 4, side)
                                    : ltc::shade_polygon_light_two_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance,
                                                                                quads[j].data(), 4, side);
                     auto tol = tolerance(frame, lobes == 1 ? lobe : lobes == 3 ? two[1] : two[0], P, F0, albedo, radiance,
@@ -432,8 +439,8 @@ void check_quad_lights(int lobes) {
                     ltc::batch::shade_quad_lights_cosine_lobe<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights,
                                                                       side, none.view(), count, isa);
                 else if (lobes == 1)
-                    ltc::batch::shade_quad_lights<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
-                                                          none.view(), count, isa);
+                    ltc::batch::shade_quad_lights_one_lobe<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
+                                                                   none.view(), count, isa);
                 else
                     ltc::batch::shade_quad_lights_two_lobe<Policy>(P, glm::vec3(0.0f), V, roughness, F0, albedo, lights, side,
                                                                    none.view(), count, isa);
@@ -445,7 +452,7 @@ void check_quad_lights(int lobes) {
 
 }  // namespace
 
-TEST_CASE("batch shading of many quad lights matches shade_polygon_light light by light", "[batch][shading]") {
+TEST_CASE("one-lobe batch shading of many quad lights matches shade_polygon_light_one_lobe light by light", "[batch][shading]") {
     check_quad_lights(1);
 }
 
@@ -474,11 +481,14 @@ TEST_CASE("quad-light batches: coordinates near FLT_MAX give finite results", "[
     for (int c = 0; c < 3; ++c) lights.radiance[c] = v[12 + c].data();
     for (const auto isa : ltc::batch::instruction_sets) {
         if (!ltc::batch::available(isa)) continue;
-        for (int lobes = 1; lobes <= 3; ++lobes) {
+        for (int lobes = 0; lobes <= 3; ++lobes) {  // shade_quad_lights, _one_lobe, _two_lobe, _cosine_lobe
             results_soa out(count);
-            if (lobes == 1)
+            if (lobes == 0)
                 ltc::batch::shade_quad_lights<Policy>(P, N, V, 0.0f, F0, albedo, lights, ltc::sidedness::two_sided, out.view(),
                                                       count, isa);
+            else if (lobes == 1)
+                ltc::batch::shade_quad_lights_one_lobe<Policy>(P, N, V, 0.0f, F0, albedo, lights, ltc::sidedness::two_sided,
+                                                               out.view(), count, isa);
             else if (lobes == 2)
                 ltc::batch::shade_quad_lights_two_lobe<Policy>(P, N, V, 0.0f, F0, albedo, lights, ltc::sidedness::two_sided,
                                                                out.view(), count, isa);
@@ -495,4 +505,55 @@ TEST_CASE("quad-light batches: coordinates near FLT_MAX give finite results", "[
 TEST_CASE("LTC-and-cosine batch shading of many quad lights matches shade_polygon_light_cosine_lobe",
           "[batch][shading][cosine_lobe]") {
     check_quad_lights(3);
+}
+
+TEST_CASE("the default shading is the table of an LTC and the cosine, bit for bit", "[batch][shading][cosine_lobe]") {
+    // ltc::shade_polygon_light, batch::shade_polygon_light and batch::shade_quad_lights are the
+    // _cosine_lobe functions (issue 16); the _one_lobe ones keep the paper's single LTC.
+    const std::size_t count = 67;
+    const points_soa pts(count, 23);
+    ltc_test::rng g(29);
+    const glm::vec3 radiance(2.0f, 1.0f, 0.5f);
+    std::vector<float> v[15];
+    for (std::size_t j = 0; j < count; ++j) {
+        const auto q = ltc_test::random_polygon(g, 4, true, j % 2 == 0);
+        for (int k = 0; k < 4; ++k) v[k].push_back(q[k].x), v[4 + k].push_back(q[k].y), v[8 + k].push_back(q[k].z);
+        for (int c = 0; c < 3; ++c) v[12 + c].push_back(float(g.uniform(0.5, 4)));
+    }
+    ltc::batch::quad_lights<float> lights;
+    for (int k = 0; k < 4; ++k) lights.x[k] = v[k].data(), lights.y[k] = v[4 + k].data(), lights.z[k] = v[8 + k].data();
+    for (int c = 0; c < 3; ++c) lights.radiance[c] = v[12 + c].data();
+    std::size_t differs_from_one_lobe = 0;
+    const auto same = [](const results_soa& x, const results_soa& y) {
+        for (int k = 0; k < 6; ++k)
+            if (x.c[k] != y.c[k]) return false;
+        return true;
+    };
+    for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
+        for (const auto isa : ltc::batch::instruction_sets) {
+            if (!ltc::batch::available(isa)) continue;
+            const auto light = ltc_test::random_polygon(g, 5, true, false);
+            results_soa a(count), b(count), c(count), d(count);
+            ltc::batch::shade_polygon_light(pts.view(), radiance, light.data(), 5, side, a.view(), count, isa);
+            ltc::batch::shade_polygon_light_cosine_lobe(pts.view(), radiance, light.data(), 5, side, b.view(), count, isa);
+            CAPTURE(static_cast<int>(isa));
+            CHECK(same(a, b));
+            const glm::vec3 P(0.1f, -0.2f, 0.05f), N(0.2f, 0.1f, 1.0f), V(0.7f, -0.3f, 0.5f), F0(0.9f, 0.6f, 0.04f);
+            ltc::batch::shade_quad_lights(P, N, V, 0.35f, F0, glm::vec3(0.5f), lights, side, c.view(), count, isa);
+            ltc::batch::shade_quad_lights_cosine_lobe(P, N, V, 0.35f, F0, glm::vec3(0.5f), lights, side, d.view(), count,
+                                                      isa);
+            CHECK(same(c, d));
+            for (std::size_t i = 0; i < count; ++i) {
+                const glm::vec3 Pi = pts.vec(0, i), Ni = pts.vec(3, i), Vi = pts.vec(6, i), F0i = pts.vec(10, i),
+                                albedo = pts.vec(13, i);
+                const float r = pts.a[9][i];
+                const auto x = ltc::shade_polygon_light(Pi, Ni, Vi, r, F0i, albedo, radiance, light.data(), 5, side);
+                const auto y = ltc::shade_polygon_light_cosine_lobe(Pi, Ni, Vi, r, F0i, albedo, radiance, light.data(), 5, side);
+                const auto z = ltc::shade_polygon_light_one_lobe(Pi, Ni, Vi, r, F0i, albedo, radiance, light.data(), 5, side);
+                CHECK(x.specular == y.specular);
+                CHECK(x.diffuse == y.diffuse);
+                differs_from_one_lobe += x.specular != z.specular;
+            }
+        }
+    CHECK(differs_from_one_lobe > 0);
 }

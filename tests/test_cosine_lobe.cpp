@@ -1,4 +1,4 @@
-// The opt-in GGX table of one LTC plus the clamped cosine (ltc/shading/ggx_cosine_lobe_fetch.hpp)
+// The default GGX table of one LTC plus the clamped cosine (ltc/shading/ggx_cosine_lobe_fetch.hpp)
 // and its shading (ltc/shading/cosine_lobe_polygon_light.hpp): the table's entries, the shading's
 // identities with the generic two-lobe shading (the cosine's integral is the form factor), bad
 // input, the fit's independence of the thread count, and the table against the Monte Carlo GGX

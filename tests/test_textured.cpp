@@ -111,7 +111,7 @@ TEST_CASE("normalization: a constant texture gives exactly the untextured result
     }
 }
 
-TEST_CASE("shade_textured_quad_light with a constant texture equals shade_polygon_light", "[textured]") {
+TEST_CASE("shade_textured_quad_light with a constant texture equals shade_polygon_light_one_lobe", "[textured]") {
     const glm::vec3 c(0.75f, 2.5f, 0.125f);
     const std::vector<glm::vec3> img(std::size_t(4) * 4, c);
     const ltc::light_texture<float> tex(4, 4, img.data());
@@ -128,8 +128,8 @@ TEST_CASE("shade_textured_quad_light with a constant texture equals shade_polygo
         const glm::vec3 F0(0.04f, 0.5f, 1.0f), albedo(0.8f, 0.3f, 0.1f);
         for (auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided}) {
             const auto a = ltc::shade_textured_quad_light(P, N, V, rough, F0, albedo, q, tex, side);
-            const auto b = ltc::shade_polygon_light(P, N, V, rough, F0, albedo, c, q, 4, side);
-            // Same integrals (eq. 11 over M^-1 P) through two rounding paths (shade_polygon_light
+            const auto b = ltc::shade_polygon_light_one_lobe(P, N, V, rough, F0, albedo, c, q, 4, side);
+            // Same integrals (eq. 11 over M^-1 P) through two rounding paths (the polygon light
             // rescales the vertices first): each edge term is accurate to a few float ulps
             // (README, "Exactness"), 4 to 8 clipped edges, no cancellation beyond the largest
             // term, and the results are <= 2.5 (radiance) * 1 (albedo): 1e-5 absolute + 1e-5

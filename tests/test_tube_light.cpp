@@ -1,6 +1,6 @@
 // The tube light as its ribbon quad (ltc/shading/tube_light.hpp): (a) a long tube parallel to the
 // floor against the infinite cylinder's exact form factor, (b) P inside the tube (or beyond an end,
-// within its radius) against the openings' disk form factors, (c) the ribbon is shade_polygon_light
+// within its radius) against the openings' disk form factors, (c) the ribbon is shade_polygon_light_one_lobe
 // of the quad, bit for bit, (d) degenerate and huge input, (e) GGX against Monte Carlo of the real
 // cylinder within examples/shape_error_report's measurements.
 #include <ltc/fitting/brdf/ggx.hpp>
@@ -93,7 +93,7 @@ TEMPLATE_TEST_CASE("tube light: P inside the tube sees all but the openings", "[
     }
 }
 
-TEMPLATE_TEST_CASE("tube light: the ribbon is shade_polygon_light of its quad, bit for bit", "[tube_light]", float,
+TEMPLATE_TEST_CASE("tube light: the ribbon is shade_polygon_light_one_lobe of its quad, bit for bit", "[tube_light]", float,
                    double) {
     using T = TestType;
     ltc_test::rng r(0xB17);
@@ -109,8 +109,8 @@ TEMPLATE_TEST_CASE("tube light: the ribbon is shade_polygon_light of its quad, b
         if (q.kind != ltc::tube_ribbon<T>::ribbon) continue;
         ++ribbons;
         REQUIRE(q.origin == P);
-        const auto b = ltc::shade_polygon_light(P, cast<T>(s.N), cast<T>(s.V), rough, F0, albedo, radiance, q.corner,
-                                                4, ltc::sidedness::two_sided);
+        const auto b = ltc::shade_polygon_light_one_lobe(P, cast<T>(s.N), cast<T>(s.V), rough, F0, albedo, radiance,
+                                                         q.corner, 4, ltc::sidedness::two_sided);
         CAPTURE(i);
         CHECK(a.specular == b.specular);
         CHECK(a.diffuse == b.diffuse);

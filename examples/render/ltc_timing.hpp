@@ -1,10 +1,8 @@
 // render/ltc_timing.hpp -- the LTC render of the polygonal lights, timed (each part the best of 5
 // runs: it takes milliseconds): point by point, and a row of pixels at a time through the batch
 // API (SIMD lanes), with the largest difference between the two; and the printed LTC times (with
-// the textured light's, by each method with --textured-method all). With --lobes 2 or cosine the
-// point-by-point render uses that table and the batch part is left out (the batch render here
-// calls ltc::batch::shade_polygon_light, the one-lobe table: its difference would be the other
-// table's, not the batch's).
+// the textured light's, by each method with --textured-method all). With --lobes 1 or 2 both
+// renders use that table (the _one_lobe or _two_lobe functions).
 #pragma once
 
 #include "camera.hpp"
@@ -25,10 +23,10 @@ namespace render {
 
 /// The polygonal lights' LTC render and its times.
 struct ltc_timing {
-    int lobes = 1;  // --lobes: the LTC table of the polygonal lights
+    int lobes = 3;  // --lobes: the LTC table of the polygonal lights (3: cosine, the default)
     std::vector<dvec3> poly;  // point by point: the polygonal lights (and their emitters)
     double seconds = INFINITY;  // point by point, best of 5
-    double batch_seconds = INFINITY;  // through ltc::batch::shade_polygon_light, best of 5 (one lobe only)
+    double batch_seconds = INFINITY;  // through ltc::batch::shade_polygon_light (or --lobes' variant), best of 5
     double batch_diff = 0;  // largest difference of a channel, batch against point by point
     double peak = 0;  // largest floor value of a channel, point by point (with the batch part)
 };
@@ -49,7 +47,6 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
         });
         t.seconds = std::min(t.seconds, seconds_since(t0));
     }
-    if (lobes != 1) return t;  // the batch render is the one-lobe table's
     // The same polygonal lights a row of pixels at a time through the batch API (SIMD lanes).
     std::vector<dvec3> ltc_batch(count);
     for (int run = 0; run < 5; ++run) {
@@ -57,7 +54,7 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
         for_each_row(H, threads, [&](int y) {
             const std::size_t row = static_cast<std::size_t>(y) * W;
             std::vector<vec3> px(static_cast<std::size_t>(W));
-            shade_ltc_batch(s, hits.data() + row, px.size(), px.data());
+            shade_ltc_batch(s, hits.data() + row, px.size(), px.data(), lobes);
             for (int x = 0; x < W; ++x) ltc_batch[row + x] = dvec3(px[static_cast<std::size_t>(x)]);
         });
         t.batch_seconds = std::min(t.batch_seconds, seconds_since(t0));
@@ -71,8 +68,7 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
 }
 
 /// Prints the LTC render's times: in all (the polygonal lights and, with it, the textured light
-/// of ltc.png, named by `method_note`), through the batch API (one lobe only: with --lobes 2 a
-/// line saying so), and with more than one run (--textured-method all) the textured light by
+/// of ltc.png, named by `method_note`), through the batch API, and with more than one run (--textured-method all) the textured light by
 /// each method.
 inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vector<textured_run>& runs,
                             const std::string& method_note, std::size_t floor_pixels, unsigned threads) {
@@ -91,15 +87,11 @@ inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vect
                     ltc_tex_seconds * 1e9 * threads / static_cast<double>(floor_pixels));
     }
 
-    if (t.lobes != 1)
-        std::printf("LTC render, batch: left out with%s (the batch render calls ltc::batch::shade_polygon_light, "
-                    "the one-lobe table)\n",
-                    lobes_option(t.lobes));
-    else
-        std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light: %.1fx "
-                    "as fast;\n                                largest difference to the point-by-point render %.1e, "
-                    "floor values up to %.2f)\n",
-                    t.batch_seconds, ltc_seconds / t.batch_seconds, t.batch_diff, t.peak);
+    std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light%s: %.1fx "
+                "as fast;\n                                largest difference to the point-by-point render %.1e, "
+                "floor values up to %.2f)\n",
+                t.batch_seconds, t.lobes == 1 ? "_one_lobe" : t.lobes == 2 ? "_two_lobe" : "",
+                ltc_seconds / t.batch_seconds, t.batch_diff, t.peak);
     if (runs.size() > 1) print_method_times(runs, floor_pixels, threads);
 }
 

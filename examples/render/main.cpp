@@ -30,7 +30,8 @@
 //
 // Images, written into --out (default: the current directory):
 //   ltc.png        per pixel and light, ltc::shade_polygon_light (specular + diffuse; default
-//                  horizon clipping, one-sided): the GGX LTC table, the exact polygon integral,
+//                  horizon clipping, one-sided): the default GGX table of an LTC and the clamped
+//                  cosine (the cosine's integral the diffuse term's form factor), the exact polygon integral,
 //                  Schlick's Fresnel through the table's magnitude and fresnel terms (Hill
 //                  2016); for the textured light ltc::shade_textured_quad_light (the same table
 //                  and Fresnel, specular and diffuse) with the ltc::textured_policy of
@@ -49,13 +50,12 @@
 //                    all          the three (below). float.
 //                  With --lobes 2 the polygonal lights by ltc::shade_polygon_light_two_lobe instead:
 //                  the opt-in two-lobe GGX table, the sum of two exactly integrated lobes (same
-//                  arguments, diffuse term and Fresnel; about 1.45x the cost). The textured light
+//                  arguments, diffuse term and Fresnel; about 1.6x the cost). The textured light
 //                  and the --shapes lights stay as they are (one lobe). The images keep their
 //                  names (run it with another --out to keep the default run's): ltc.png and
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png
-//                  do not change. --lobes cosine likewise with ltc::shade_polygon_light_cosine_lobe:
-//                  the opt-in table of an LTC and the clamped cosine (one LTC integral, the
-//                  cosine's integral the form factor of the diffuse term; about 1.05-1.07x the
+//                  do not change. --lobes 1 likewise with ltc::shade_polygon_light_one_lobe, the
+//                  paper's single LTC (the default before issue 16; 0.93-0.95x the default's
 //                  cost in the README's benchmark).
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
 //                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
@@ -130,13 +130,11 @@
 // three. The other lines are fetch's. With all, or one method other than fetch, the LTC time
 // and the headings name the method of ltc.png ("textured light by exact_cells (64 cells)"); the
 // default run's lines are as they were before --textured-method.
-// With --lobes 2 the LTC time, the reference / LTC ratio and the statistics of all lights and of
-// the polygonal lights alone (overall lines and per-tile means) are those of the two-lobe render:
-// a line after the scene's says so, and the LTC time and the headings say "polygonal lights with
-// two lobes" (--lobes cosine: "with an LTC and the cosine"); the batch timing is left out (the
-// batch render calls ltc::batch::shade_polygon_light, the one-lobe table: its difference to the
-// point-by-point render would be the other table's). The
-// default run's lines are as they were before --lobes.
+// With --lobes 2 the LTC and batch times, the reference / LTC ratio and the statistics of all
+// lights and of the polygonal lights alone (overall lines and per-tile means) are those of the
+// two-lobe render: a line after the scene's says so, and the LTC time and the headings say
+// "polygonal lights with two lobes" (--lobes 1: "with one lobe"). The default run's lines are
+// as they were before --lobes.
 // --shapes (shapes.hpp, shapes_render.hpp): after the rest, unchanged, a disk, a sphere and a tube
 // light alone on the floor: shapes_ltc.png, shapes_reference.png, shapes_error.png, statistics.
 // Exit status 0, or 1 if an image could not be written or read or a value was not finite, 2
@@ -227,9 +225,8 @@ int main(int argc, char** argv) {
                     2.0 * tex->half_height, opt.texture_radiance, prefilter_seconds, tex->prefiltered->level_count());
     if (opt.lobes == 2)
         std::printf("polygonal lights: the two-lobe GGX table (--lobes 2: ltc::shade_polygon_light_two_lobe)\n");
-    if (opt.lobes == 3)
-        std::printf("polygonal lights: the GGX table of an LTC and the cosine (--lobes cosine: "
-                    "ltc::shade_polygon_light_cosine_lobe)\n");
+    if (opt.lobes == 1)
+        std::printf("polygonal lights: the one-lobe GGX table (--lobes 1: ltc::shade_polygon_light_one_lobe)\n");
 
     // The textured light's LTC render by each method of --textured-method (one, or all three
     // with "all"); the first one's is the textured light of ltc.png, error.png and

@@ -21,15 +21,14 @@ inline const char* method_name(ltc::textured_method m) {
     }
 }
 
-/// " with two lobes" after "polygonal lights" where --lobes 2 shades them (the default run's lines
-/// are left as they were).
-/// (" with an LTC and the cosine" for --lobes cosine, stored as lobes = 3).
+/// " with two lobes" after "polygonal lights" where --lobes 2 shades them, " with one lobe" for
+/// --lobes 1; "" for the default, --lobes cosine (stored as lobes = 3), whose lines are as they were.
 inline const char* lobes_note(int lobes) {
-    return lobes == 2 ? " with two lobes" : lobes == 3 ? " with an LTC and the cosine" : "";
+    return lobes == 2 ? " with two lobes" : lobes == 1 ? " with one lobe" : "";
 }
 
-/// The --lobes argument that gives `lobes` (" --lobes 2", " --lobes cosine"; "" for one lobe).
-inline const char* lobes_option(int lobes) { return lobes == 2 ? " --lobes 2" : lobes == 3 ? " --lobes cosine" : ""; }
+/// The --lobes argument that gives `lobes` (" --lobes 2", " --lobes 1"; "" for the default).
+inline const char* lobes_option(int lobes) { return lobes == 2 ? " --lobes 2" : lobes == 1 ? " --lobes 1" : ""; }
 
 struct options : ltc_examples::image_options {  // --width, --height, --threads, --out, --seed, --exposure
     options() : image_options(256, 160) {}
@@ -42,10 +41,11 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     std::vector<ltc::textured_method> textured_methods{ltc::textured_method::fetch};
     std::size_t cells = 64;  // --cells: exact_cells' budget (ltc::cell_budget::max_cells)
     bool shapes = false;     // --shapes: the disk, sphere and tube lights' section (shapes_render.hpp)
-    // --lobes: the LTC table of the polygonal lights in ltc.png, 1 (ltc::shade_polygon_light) or 2
-    // (ltc::shade_polygon_light_two_lobe) or 3 for --lobes cosine (ltc::shade_polygon_light_cosine_lobe);
-    // the textured light and the --shapes lights keep one lobe.
-    int lobes = 1;
+    // --lobes: the LTC table of the polygonal lights in ltc.png, 1 (ltc::shade_polygon_light_one_lobe)
+    // or 2 (ltc::shade_polygon_light_two_lobe) or 3 for --lobes cosine, the default
+    // (ltc::shade_polygon_light, the table of an LTC and the cosine); the textured light and the
+    // --shapes lights keep one lobe.
+    int lobes = 3;
 };
 
 inline void print_help(const char* argv0) {
@@ -115,16 +115,14 @@ inline void print_help(const char* argv0) {
         "                     all          the three, each timed and measured against the same\n"
         "                                  reference (computed once)\n"
         "  --cells N        exact_cells' budget: adaptive cells at most (default 64; at least 1)\n"
-        "  --lobes L        the LTC table of the two polygonal lights in ltc.png: 1, the GGX table\n"
-        "                   (ltc::shade_polygon_light; the default), or 2, the opt-in two-lobe GGX\n"
-        "                   table (ltc::shade_polygon_light_two_lobe: the sum of two exactly integrated\n"
-        "                   lobes, about 1.45x the cost). The textured light and the --shapes lights\n"
-        "                   stay as they are (one lobe). The images keep their names (give another\n"
-        "                   --out to keep both runs'); the LTC time, error images and statistics are\n"
-        "                   then those of the two-lobe render, and the batch timing is left out\n"
-        "                   (it calls ltc::batch::shade_polygon_light, the one-lobe table). cosine:\n"
-        "                   the opt-in table of an LTC and the clamped cosine\n"
-        "                   (ltc::shade_polygon_light_cosine_lobe: one LTC integral, as one lobe)\n"
+        "  --lobes L        the LTC table of the two polygonal lights in ltc.png: cosine, the default\n"
+        "                   (ltc::shade_polygon_light: an LTC and the clamped cosine, one LTC\n"
+        "                   integral), 1, the paper's single LTC (ltc::shade_polygon_light_one_lobe),\n"
+        "                   or 2, the opt-in two-lobe GGX table (ltc::shade_polygon_light_two_lobe:\n"
+        "                   the sum of two exactly integrated lobes, about 1.6x the cost). The\n"
+        "                   textured light and the --shapes lights stay as they are (one lobe). The\n"
+        "                   images keep their names (give another --out to keep both runs'); the LTC\n"
+        "                   and batch times, error images and statistics are then those of that table\n"
         "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"
         "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
         "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"

@@ -2,7 +2,7 @@
 // reference: error.png and the statistics of all lights; with the textured light also those of
 // the polygonal lights alone and of the textured light alone (textured_error.png), and with
 // --textured-method all those of each method (textured_error_<method>.png), then the methods
-// side by side. With --lobes 2 the headings say that the polygonal lights have two lobes.
+// side by side. With --lobes 1 or 2 the headings say that the polygonal lights have one or two lobes.
 #pragma once
 
 #include "camera.hpp"
@@ -52,7 +52,7 @@ inline bool report_errors(const scene& s, const std::vector<pixel_hit>& hits, co
     }
     const error_stats poly_stats = measure_error(hits, ltc_poly, ref.poly, ref.var_poly, floor, rgb);
     std::printf("\n=== all lights (ltc.png, reference.png, error.png%s%s%s%s) ===\n",
-                opt.lobes == 1 ? "" : "; the polygonal lights", lobes_note(opt.lobes),
+                opt.lobes == 3 ? "" : "; the polygonal lights", lobes_note(opt.lobes),
                 method_note.empty() ? "" : "; the textured light", method_note.c_str());
     print_error(s, all, floor);
     std::printf("\n=== the polygonal lights alone%s (rectangle + pentagon: the statistics of --no-texture%s) ===\n",

@@ -1,7 +1,7 @@
 // render/shade_ltc.hpp -- the LTC render of one pixel (float, a renderer's path): the polygonal
 // lights with ltc::shade_polygon_light (or a row of pixels at once with
-// ltc::batch::shade_polygon_light; with --lobes 2 with ltc::shade_polygon_light_two_lobe, the
-// two-lobe table, point by point only), the textured light with ltc::shade_textured_quad_light
+// ltc::batch::shade_polygon_light; with --lobes 1 the _one_lobe functions, with --lobes 2 the
+// _two_lobe ones), the textured light with ltc::shade_textured_quad_light
 // (by default I_D I_L: the exact polygon integral times one fetch into the prefiltered texture,
 // paper sections 5.2-5.4; or the cells of the texel-constant texture, --textured-method);
 // specular and diffuse, Schlick's Fresnel through the table (Hill 2016).
@@ -13,6 +13,7 @@
 #include "scene.hpp"
 
 #include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/textured_light.hpp>
@@ -23,10 +24,10 @@
 
 namespace render {
 
-/// One polygonal light at a floor point by LTC with `lobes` lobes (--lobes): 1, the GGX table
-/// (ltc::shade_polygon_light), or 2, the two-lobe table (ltc::shade_polygon_light_two_lobe,
-/// taking the same arguments), or 3, the table of an LTC and the cosine (--lobes cosine:
-/// ltc::shade_polygon_light_cosine_lobe).
+/// One polygonal light at a floor point by LTC with the table of --lobes: 3, the default table of
+/// an LTC and the cosine (--lobes cosine: ltc::shade_polygon_light), 1, the one-lobe table
+/// (ltc::shade_polygon_light_one_lobe), or 2, the two-lobe table (ltc::shade_polygon_light_two_lobe),
+/// all taking the same arguments.
 inline ltc::polygon_light_result<float> shade_ltc_light(const light& l, const material& m, const pixel_hit& hit,
                                                         int lobes) {
     const auto shade_with = [&](const auto& shading_function) {
@@ -34,14 +35,14 @@ inline ltc::polygon_light_result<float> shade_ltc_light(const light& l, const ma
                                 l.vertices.data(), l.vertices.size(), ltc::sidedness::one_sided);
     };
     // The two are overload sets of templates: each wrapped in a lambda to be passed as a value.
-    if (lobes == 3) return shade_with([](const auto&... a) { return ltc::shade_polygon_light_cosine_lobe(a...); });
+    if (lobes == 1) return shade_with([](const auto&... a) { return ltc::shade_polygon_light_one_lobe(a...); });
     return lobes == 2 ? shade_with([](const auto&... a) { return ltc::shade_polygon_light_two_lobe(a...); })
                       : shade_with([](const auto&... a) { return ltc::shade_polygon_light(a...); });
 }
 
-/// Radiance of one pixel from the polygonal lights (and their emitters): LTC with `lobes` lobes
-/// (float, the renderer's path).
-inline vec3 shade_ltc(const scene& s, const pixel_hit& hit, int lobes = 1) {
+/// Radiance of one pixel from the polygonal lights (and their emitters): LTC with the table of
+/// --lobes (float, the renderer's path).
+inline vec3 shade_ltc(const scene& s, const pixel_hit& hit, int lobes = 3) {
     if (hit.kind == pixel_hit::emitter_front) return s.lights[static_cast<std::size_t>(hit.light)].radiance;
     if (hit.kind != pixel_hit::floor) return vec3(0.0f);
     const material& m = s.materials[static_cast<std::size_t>(hit.material)];
@@ -55,14 +56,15 @@ inline vec3 shade_ltc(const scene& s, const pixel_hit& hit, int lobes = 1) {
 
 /// shade_ltc over count pixels at once, the way a renderer's pass over its G-buffer would: the
 /// floor pixels gathered into structures of arrays, then each light over all of them with
-/// ltc::batch::shade_polygon_light (one pixel per SIMD lane, the same values up to rounding).
-inline void shade_ltc_batch(const scene& s, const pixel_hit* hits, std::size_t count, vec3* out) {
+/// ltc::batch::shade_polygon_light (one pixel per SIMD lane, the same values up to rounding), or
+/// with --lobes 1 or 2 its _one_lobe or _two_lobe variant.
+inline void shade_ltc_batch(const scene& s, const pixel_hit* hits, std::size_t count, vec3* out, int lobes = 3) {
     std::vector<float> in[16];  // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb
     std::vector<std::size_t> where;
     for (std::size_t i = 0; i < count; ++i) {
         const pixel_hit& h = hits[i];
         if (h.kind != pixel_hit::floor) {
-            out[i] = shade_ltc(s, h);
+            out[i] = shade_ltc(s, h, lobes);
             continue;
         }
         const material& m = s.materials[static_cast<std::size_t>(h.material)];
@@ -83,8 +85,13 @@ inline void shade_ltc_batch(const scene& s, const pixel_hit* hits, std::size_t c
     }
     std::vector<vec3> sum(n, vec3(0.0f));
     for (const light& l : s.lights) {
-        ltc::batch::shade_polygon_light(points, l.radiance, l.vertices.data(), l.vertices.size(),
-                                        ltc::sidedness::one_sided, res, n);
+        const auto side = ltc::sidedness::one_sided;
+        if (lobes == 1)
+            ltc::batch::shade_polygon_light_one_lobe(points, l.radiance, l.vertices.data(), l.vertices.size(), side, res, n);
+        else if (lobes == 2)
+            ltc::batch::shade_polygon_light_two_lobe(points, l.radiance, l.vertices.data(), l.vertices.size(), side, res, n);
+        else
+            ltc::batch::shade_polygon_light(points, l.radiance, l.vertices.data(), l.vertices.size(), side, res, n);
         for (std::size_t j = 0; j < n; ++j)
             for (int c = 0; c < 3; ++c) sum[j][c] += result[c][j] + result[3 + c][j];
     }

@@ -96,8 +96,8 @@ void run(FuzzedDataProvider& in) {
     const T roughness = in.ConsumeProbability<T>();
     for (const auto clip : {ltc::horizon_clipping::ltc_space, ltc::horizon_clipping::shading_first,
                             ltc::horizon_clipping::sphere_analytic, ltc::horizon_clipping::sphere_table}) {
-        const auto r = ltc::shade_polygon_light(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
-                                                ltc::sidedness::two_sided, clip);
+        const auto r = ltc::shade_polygon_light_one_lobe(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv,
+                                                         n, ltc::sidedness::two_sided, clip);
         require_finite(r.specular, "GGX specular");
         require_finite(r.diffuse, "GGX diffuse");
         const auto r2 = ltc::shade_polygon_light_two_lobe(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
@@ -108,6 +108,13 @@ void run(FuzzedDataProvider& in) {
                                                              n, ltc::sidedness::two_sided, clip);
         require_finite(r3.specular, "LTC and cosine GGX specular");
         require_finite(r3.diffuse, "LTC and cosine GGX diffuse");
+        // The default is the LTC and the cosine (ltc/shading/polygon_light.hpp).
+        const auto r0 = ltc::shade_polygon_light(P, N, V, roughness, vec3(T(0.04)), vec3(T(0.5)), vec3(T(1)), pv, n,
+                                                 ltc::sidedness::two_sided, clip);
+        if (!(r0.specular == r3.specular && r0.diffuse == r3.diffuse)) {
+            std::fprintf(stderr, "the default shading differs from shade_polygon_light_cosine_lobe\n");
+            std::abort();
+        }
     }
 
     // The same point in the batch shading, one lobe, two lobes, an LTC and the cosine, with every
@@ -138,7 +145,8 @@ void run(FuzzedDataProvider& in) {
                     ltc::batch::shade_polygon_light_cosine_lobe(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out,
                                                                 count, isa);
                 else if (lobes == 1)
-                    ltc::batch::shade_polygon_light(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out, count, isa);
+                    ltc::batch::shade_polygon_light_one_lobe(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out, count,
+                                                             isa);
                 else
                     ltc::batch::shade_polygon_light_two_lobe(points, vec3(T(1)), pv, n, ltc::sidedness::two_sided, out,
                                                              count, isa);
@@ -160,8 +168,8 @@ void run(FuzzedDataProvider& in) {
                 const vec3 F0(T(0.04)), albedo(T(0.5));
                 for (int lobes = 1; lobes <= 3; ++lobes) {
                     if (lobes == 1)
-                        ltc::batch::shade_quad_lights(P, N, V, roughness, F0, albedo, lights, ltc::sidedness::two_sided, out,
-                                                      count, isa);
+                        ltc::batch::shade_quad_lights_one_lobe(P, N, V, roughness, F0, albedo, lights,
+                                                               ltc::sidedness::two_sided, out, count, isa);
                     else if (lobes == 2)
                         ltc::batch::shade_quad_lights_two_lobe(P, N, V, roughness, F0, albedo, lights,
                                                                ltc::sidedness::two_sided, out, count, isa);

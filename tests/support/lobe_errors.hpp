@@ -25,7 +25,7 @@ struct lobe_errors {
 };
 
 /// |LTC - GT| / GT of the one-lobe shading and of `other`, a shading with the arguments of
-/// ltc::shade_polygon_light (P, N, V, roughness, F0, albedo, radiance, vertices, n, side; called
+/// ltc::shade_polygon_light_one_lobe (P, N, V, roughness, F0, albedo, radiance, vertices, n, side; called
 /// at the origin, N = z, no diffuse, one-sided), for the light L (vertices facing the origin) at
 /// view angle theta (deg) and roughness r, with the specular colour f0 (1: no Fresnel term;
 /// otherwise Schlick's factor in the ground truth, ltc/fitting/brdf/schlick.hpp); ground truth by
@@ -43,7 +43,7 @@ lobe_errors errors_against_truth(double theta, double r, const std::vector<dvec3
         return shading(dvec3(0), dvec3(0, 0, 1), V, r, dvec3(f0), dvec3(0), dvec3(1), L.data(), L.size(),
                        ltc::sidedness::one_sided);
     };
-    const auto one = shade([](auto&&... a) { return ltc::shade_polygon_light(a...); });
+    const auto one = shade([](auto&&... a) { return ltc::shade_polygon_light_one_lobe(a...); });
     const auto o = shade(other);
     const lobe_errors e{std::abs(one.specular.x - gt.mean) / gt.mean, std::abs(o.specular.x - gt.mean) / gt.mean};
     CAPTURE(theta, r, seed, gt.mean, gt.standard_error, one.specular.x, o.specular.x, e.one, e.other);

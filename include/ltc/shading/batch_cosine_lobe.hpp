@@ -1,19 +1,20 @@
-// ltc/shading/batch_cosine_lobe.hpp -- the opt-in GGX shading of an LTC and the clamped cosine
-// (ltc/shading/cosine_lobe_polygon_light.hpp) in batches: one polygonal light over many shading
-// points, or one point under many quad lights.
+// ltc/shading/batch_cosine_lobe.hpp -- the GGX shading of an LTC and the clamped cosine
+// (ltc/shading/cosine_lobe_polygon_light.hpp) in batches, the default one (ltc::batch::
+// shade_polygon_light and shade_quad_lights call these, ltc/shading/batch_shading.hpp): one
+// polygonal light over many shading points, or one point under many quad lights.
 //
 //   ltc::batch::shade_polygon_light_cosine_lobe(pts, radiance, vertices, n, ltc::sidedness::one_sided, res, count);
 //   ltc::batch::shade_quad_lights_cosine_lobe(P, N, V, roughness, F0, albedo, lights, ltc::sidedness::one_sided, res, count);
 //
 // Item i gets what ltc::shade_polygon_light_cosine_lobe gives for it with
-// horizon_clipping::ltc_space, up to rounding: the SIMD kernel of ltc/shading/batch_shading.hpp
-// with the LTC's table and the cosine's magnitude and Fresnel term, the cosine's integral the form
+// horizon_clipping::ltc_space, up to rounding: the SIMD kernel of ltc/shading/batch_lobes.hpp with
+// the LTC's table and the cosine's magnitude and Fresnel term, the cosine's integral the form
 // factor that the diffuse term computes (one frame, one form factor, one LTC integral per point,
 // as the one-lobe batch; benchmarks/bench_shading.cpp). Points the kernel hands back, and the
 // tail, get ltc::shade_polygon_light_cosine_lobe itself (tests/test_batch_shading.cpp).
 #pragma once
 
-#include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_lobes.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
 

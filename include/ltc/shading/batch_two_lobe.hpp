@@ -5,16 +5,16 @@
 //   ltc::batch::shade_quad_lights_two_lobe(P, N, V, roughness, F0, albedo, lights, ltc::sidedness::one_sided, res, count);
 //
 // Item i gets what ltc::shade_polygon_light_two_lobe gives for it with horizon_clipping::ltc_space,
-// up to rounding: the SIMD kernel of ltc/shading/batch_shading.hpp with both lobe tables
+// up to rounding: the SIMD kernel of ltc/shading/batch_lobes.hpp with both lobe tables
 // (ltc::ggx_two_lobe::lobe_table) in one pass: one frame and one form factor per point, an LTC
 // integral per lobe (benchmarks/bench_shading.cpp: the cost against the one-lobe batch). Points
 // the kernel hands back, and the tail, get ltc::shade_polygon_light_two_lobe itself. The tolerance
 // against the scalar shading with the kernel's coefficients is the sum of the one-lobe batch's for
 // each lobe (tests/test_batch_shading.cpp). shade_quad_lights_two_lobe: one point and many quad
-// lights, as batch::shade_quad_lights, with one more LTC integral per light for lobe 2.
+// lights, as batch::shade_quad_lights_one_lobe, with one more LTC integral per light for lobe 2.
 #pragma once
 
-#include <ltc/shading/batch_shading.hpp>
+#include <ltc/shading/batch_lobes.hpp>
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 

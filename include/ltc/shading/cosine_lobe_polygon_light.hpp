@@ -1,26 +1,28 @@
 // ltc/shading/cosine_lobe_polygon_light.hpp -- shading a point with a constant-radiance polygonal
-// light with the opt-in GGX table of one LTC plus the clamped cosine about the normal
-// (ltc/shading/ggx_cosine_lobe_fetch.hpp):
+// light with the GGX table of one LTC plus the clamped cosine about the normal
+// (ltc/shading/ggx_cosine_lobe_fetch.hpp), the library's default (ltc::shade_polygon_light's
+// world-space overload calls this one, ltc/shading/polygon_light.hpp):
 //
 //   specular = radiance ((F0 m_c + (1 - F0) f_c) E + (F0 m_M + (1 - F0) f_M) I_M)
 //
 // with E the form factor (the cosine lobe's integral: paper eq. 11, the one the diffuse term
 // uses), I_M the LTC's integral (eq. 3), and each lobe's magnitude m and Fresnel term f carrying
-// its share. The diffuse term is shade_polygon_light's.
+// its share. The diffuse term is the one-lobe shading's.
 //
 //   #include <ltc/shading/cosine_lobe_polygon_light.hpp>
 //   ltc::polygon_light_result<float> r = ltc::shade_polygon_light_cosine_lobe(
 //       P, N, V, roughness, F0, albedo, radiance, vertices, n, ltc::sidedness::one_sided);
 //
-// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light, and the
-// same integrals (one form factor, one LTC integral): the extra cost is the second table fetch.
+// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light_one_lobe,
+// and the same integrals (one form factor, one LTC integral): the extra cost is the second table
+// fetch.
 // The cosine's integral is the form factor of the clipping mode, which is its exact integral
 // with ltc_space and shading_first clipping (the cosine needs no clipping in its own space but
 // the horizon's) and the clipless approximation with the sphere modes.
 #pragma once
 
 #include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/polygon_light_radiance.hpp>
 
 #include <glm/glm.hpp>
 

@@ -50,7 +50,7 @@ inline polygon_light_result<T> shade_disk_light(const shading_frame<T>& frame, c
     return r;
 }
 
-/// The disk light (file comment) with the library's GGX table.
+/// The disk light (file comment) with the library's one-lobe GGX table (ltc::ggx::fetch).
 template <typename T>
 inline polygon_light_result<T> shade_disk_light(const glm::vec<3, T>& P, const glm::vec<3, T>& N,
                                                 const glm::vec<3, T>& V, T roughness, const glm::vec<3, T>& F0,

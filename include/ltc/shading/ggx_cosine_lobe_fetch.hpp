@@ -1,10 +1,11 @@
-// ltc/shading/ggx_cosine_lobe_fetch.hpp -- the opt-in GGX table of one LTC plus the clamped cosine
-// about the normal, and its lookup (issue 16):
+// ltc/shading/ggx_cosine_lobe_fetch.hpp -- the GGX table of one LTC plus the clamped cosine about
+// the normal, and its lookup (issue 16): the table of the default shading (ltc::shade_polygon_light,
+// ltc::batch::shade_polygon_light and shade_quad_lights):
 //
 //   rho cos ~= magnitude ((1 - s) D_cos + s D_M),
 //
 // where D_cos's integral over a polygon is the form factor that the shading computes anyway for
-// the diffuse term, so that the specular term costs one LTC integral, as with the default table,
+// the diffuse term, so that the specular term costs one LTC integral, as with the one-lobe table,
 // while a share of GGX's lobe goes to the broad part that a single LTC cannot follow (grazing
 // views). Shade with ltc/shading/cosine_lobe_polygon_light.hpp.
 //

@@ -1,4 +1,7 @@
-// ltc/shading/ggx_fetch.hpp -- the LTC table of the GGX BRDF and its lookup (paper sections 4 and 5).
+// ltc/shading/ggx_fetch.hpp -- the one-lobe LTC table of the GGX BRDF and its lookup (paper sections 4
+// and 5): the paper's single LTC per node, the table of ltc::shade_polygon_light_one_lobe and of the
+// textured, line, disk, sphere and tube lights (the polygonal lights' default shading adds the
+// clamped cosine: ltc/shading/ggx_cosine_lobe_fetch.hpp).
 //
 //   #include <ltc/shading/ggx_fetch.hpp>
 //   const auto c = ltc::ggx::fetch(cos_theta_v, roughness);        // float or double

@@ -56,21 +56,22 @@
 // error at K = 1 / 4 / 16 falls from 5.4 / 3.4 / 1.9% (random shifts, four seeds' mean) to
 // 4.2 / 2.7 / 1.8% (README, "Shadows").
 //
-// The analytic part is the one-lobe shading, with options.lobes = analytic_lobes::two the opt-in
-// two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the ratio then corrects a closer
-// unshadowed result (the shadows example: RMS bias against the path-traced truth 10.7% with one
-// lobe, 4.8% with two, at K = 16), at the cost of its second lobe's integral; the samples then
-// follow its first lobe (sampling the two lobes' mixture measured worse at equal CPU time:
-// README, shadows section). With analytic_lobes::cosine_lobe, the opt-in table of an LTC and the
-// clamped cosine (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral; RMS bias 6.6%
-// there): K_s follows its LTC's part of the specular term only, and the cosine's part joins the
-// diffuse share (K_d), whose technique covers the broad part that the LTC, fitted next to the
-// cosine, leaves out.
+// The analytic part is by default the one-lobe shading (shade_polygon_light_one_lobe: with the
+// ratio, the tables measured alike at equal time, README "Shadows"), with options.lobes =
+// analytic_lobes::two the opt-in two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the
+// ratio then corrects a closer unshadowed result (the shadows example: RMS bias against the
+// path-traced truth 10.7% with one lobe, 4.8% with two, at K = 16), at the cost of its second
+// lobe's integral; the samples then follow its first lobe (sampling the two lobes' mixture
+// measured worse at equal CPU time: README, shadows section). With analytic_lobes::cosine_lobe,
+// the table of an LTC and the clamped cosine that ltc::shade_polygon_light uses
+// (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral; RMS bias 6.6% there): K_s
+// follows its LTC's part of the specular term only, and the cosine's part joins the diffuse share
+// (K_d), whose technique covers the broad part that the LTC, fitted next to the cosine, leaves out.
 //
-// Outputs: `unshadowed` (= shade_polygon_light, shade_polygon_light_two_lobe or
-// shade_polygon_light_cosine_lobe, horizon clipping ltc_space), `ratio` (the estimator above:
-// biased, consistent, exact when nothing occludes the light), `unbiased` (plain Monte Carlo of
-// the true BRDF, Schlick's Fresnel included, with the same samples and visibility:
+// Outputs: `unshadowed` (= shade_polygon_light_one_lobe, shade_polygon_light_two_lobe or
+// shade_polygon_light_cosine_lobe, the last ltc::shade_polygon_light; horizon clipping ltc_space),
+// `ratio` (the estimator above: biased, consistent, exact when nothing occludes the light),
+// `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the same samples and visibility:
 // sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of the LTC's
 // fitting error), and per term the ratio's two sums (`specular_estimates`, `diffuse_estimates`),
 // for renderers that denoise the shadows as Heitz et al. do: filter each of the two over
@@ -123,10 +124,10 @@ namespace ltc {
 enum class shadow_sampler { ltc_polygon, light_area };
 /// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
 enum class diffuse_sampler { light_area, cosine };
-/// The analytic, unshadowed part: the GGX table's lobe, the opt-in two-lobe table
-/// (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe, which the
-/// estimator only needs as a density) or the opt-in table of an LTC and the cosine
-/// (ltc/shading/cosine_lobe_polygon_light.hpp; the specular samples follow its LTC, for the
+/// The analytic, unshadowed part: the one-lobe GGX table's lobe (the default here), the opt-in
+/// two-lobe table (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe,
+/// which the estimator only needs as a density) or the table of an LTC and the cosine, which
+/// ltc::shade_polygon_light uses (ltc/shading/cosine_lobe_polygon_light.hpp; the specular samples follow its LTC, for the
 /// LTC's part of the specular term; the cosine's part joins the diffuse share).
 enum class analytic_lobes { one, two, cosine_lobe };
 
@@ -313,7 +314,8 @@ struct ratio_sums {
 }  // namespace detail
 
 /// Shading of a constant-radiance polygonal light with visibility (file comment): the GGX
-/// table's lobe at (N.V, roughness), world-space inputs as ltc::shade_polygon_light.
+/// table's lobe at (N.V, roughness) (options.lobes: which table), world-space inputs as
+/// ltc::shade_polygon_light.
 template <typename T, typename Visible>
 shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,

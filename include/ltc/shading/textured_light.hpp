@@ -149,7 +149,7 @@ struct textured_light_result {
     glm::vec<3, T> diffuse{T(0)};
 };
 
-/// A textured quad light in world space (section 5.2 with the GGX table of section 4):
+/// A textured quad light in world space (section 5.2 with the one-lobe GGX table of section 4):
 ///
 ///   specular = (F0 magnitude + (1 - F0) fresnel) I_D I_L       (LTC of GGX, Hill 2016 Fresnel)
 ///   diffuse  = albedo I_D,cos I_L,cos                          (the clamped cosine itself: M = I)
@@ -158,7 +158,7 @@ struct textured_light_result {
 /// roughness^2, quad[0..3] the world-space corners with uv (0,0), (1,0), (1,1), (0,1). The frame
 /// is the one of shade_polygon_light (ltc/shading/polygon_light.hpp, make_shading_frame): T1 = normalize(V -
 /// N (V.N)), T2 = N x T1, robust when V ~ N; cos theta_v = clamp(N.V, 0, 1). With a constant
-/// texture c it equals shade_polygon_light(..., radiance = c, ...) with ltc_space clipping.
+/// texture c it equals shade_polygon_light_one_lobe(..., radiance = c, ...) with ltc_space clipping.
 /// Zero for N = 0; finite for any finite input. `policy` picks the textured integral of both
 /// terms (textured_method; the paper's fetch by default).
 template <typename T>

@@ -161,7 +161,7 @@ inline polygon_light_result<T> shade_tube_light(const shading_frame<T>& frame, c
     return r;
 }
 
-/// The tube light (file comment) with the library's GGX table.
+/// The tube light (file comment) with the library's one-lobe GGX table (ltc::ggx::fetch).
 template <typename T>
 inline polygon_light_result<T> shade_tube_light(const glm::vec<3, T>& P, const glm::vec<3, T>& N,
                                                 const glm::vec<3, T>& V, T roughness, const glm::vec<3, T>& F0,
