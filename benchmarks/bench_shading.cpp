@@ -135,9 +135,10 @@ void BM_library_scalar(benchmark::State& state) {
     report_errors(state, red);
 }
 
-// The opt-in tables point by point: Cosine false, shade_polygon_light_two_lobe (two LTC
-// integrals); true, shade_polygon_light_cosine_lobe (one LTC integral and the form factor, as
-// BM_library_scalar, and a second table fetch). Throughput only.
+// The other tables point by point: Cosine false, shade_polygon_light_two_lobe (the opt-in table,
+// two LTC integrals); true, shade_polygon_light_cosine_lobe (the default shade_polygon_light: one
+// LTC integral and the form factor, as BM_library_scalar, and a second table fetch). Throughput
+// only.
 template <typename Policy, bool Cosine>
 void BM_library_scalar_opt_in(benchmark::State& state) {
     const scene& s = the_scene();
@@ -201,7 +202,7 @@ void BM_batch_shading(benchmark::State& state) {
     report_errors(state, out.red());
 }
 
-// The opt-in batches, throughput only, as BM_library_scalar_opt_in: Cosine false, the two-lobe
+// The other tables' batches, throughput only, as BM_library_scalar_opt_in: Cosine false, the two-lobe
 // batch (ltc/shading/batch_two_lobe.hpp); true, the batch of an LTC and the cosine
 // (ltc/shading/batch_cosine_lobe.hpp), also with each instruction set pinned, against the
 // one-lobe BM_batch_shading<isa> rows (issue 16's goal: at most 1.2x the one-lobe cost).

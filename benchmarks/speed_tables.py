@@ -32,7 +32,7 @@ BATCH_ROWS = [
 SHADING_ROWS = [
     ("BM_reference_shading", "reference shading port"),
     ("BM_library_scalar<ltc::edge_policy::exact>", "shade_polygon_light_one_lobe, exact"),
-    ("BM_library_scalar<ltc::edge_policy::minimax_rational>", "shade_polygon_light_one_lobe, default"),
+    ("BM_library_scalar<ltc::edge_policy::minimax_rational>", "shade_polygon_light_one_lobe, default edge terms"),
     ("BM_batch_shading<isa::baseline>", "batch, baseline (SSE2)"),
     ("BM_batch_shading<isa::avx2>", "batch, AVX2"),
     ("BM_batch_shading<isa::avx512>", "batch, AVX-512"),

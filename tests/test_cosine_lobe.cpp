@@ -99,12 +99,17 @@ TEST_CASE("cosine-lobe shading: the form factor as the cosine's integral, the on
                     CHECK(std::abs(fast.specular[c] - generic.specular[c]) <=
                           2 * 20 * eps * brdf_cosine[c] * radiance[c] + 2 * eps * std::abs(generic.specular[c]));
                 CHECK(fast.diffuse == generic.diffuse);
-                // The table's lookup of the cosine's matrix gives the identity.
+                // The cosine's lookup: the identity, and its two channels as the full lookup gives them.
                 const auto fetched = ltc::ggx_cosine_lobe::fetch(frame.cos_theta_v, r);
+                const ltc::ltc_table cosine_table = ltc::ggx_cosine_lobe::lobe_table(0);
+                const auto full = cosine_table.fetch_at(cosine_table.locate(frame.cos_theta_v, r));
                 CHECK(fetched[0].m_inv == glm::dmat3(1.0));
+                CHECK(full.m_inv == glm::dmat3(1.0));  // the stored matrix, interpolated
+                CHECK(fetched[0].magnitude == full.magnitude);
+                CHECK(fetched[0].fresnel == full.fresnel);
                 // The diffuse term is the one-lobe shading's.
-                const auto one = ltc::shade_polygon_light(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
-                                                          ltc::sidedness::one_sided, mode);
+                const auto one = ltc::shade_polygon_light_one_lobe(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
+                                                                   ltc::sidedness::one_sided, mode);
                 CHECK(fast.diffuse == one.diffuse);
                 CHECK(fast.specular.x >= 0);
             }

@@ -84,8 +84,8 @@ TEST_CASE("two-lobe shading: the one-lobe diffuse term, lobes that add, float ag
                 const dvec3 V = ltc::brdf::view_from_cos(std::cos(theta * pi / 180));
                 const auto two = ltc::shade_polygon_light_two_lobe(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
                                                                    ltc::sidedness::one_sided, mode);
-                const auto one = ltc::shade_polygon_light(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
-                                                          ltc::sidedness::one_sided, mode);
+                const auto one = ltc::shade_polygon_light_one_lobe(P, N, V, r, F0, albedo, radiance, quad.data(), 4,
+                                                                   ltc::sidedness::one_sided, mode);
                 // The diffuse term is the one-lobe shading's, bit for bit.
                 CHECK(two.diffuse == one.diffuse);
                 // The specular term is the sum of each lobe shaded alone (the other's share 0).

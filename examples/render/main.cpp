@@ -26,15 +26,15 @@
 //   dielectric: F0 = 0.04 and a Lambertian albedo 0.5; gold, copper: coloured F0, no diffuse;
 //   thin grout lines between the tiles (a rough, dark dielectric).
 // The camera sees the floor at theta_v = 50 to 76 degrees from its normal: grazing angles, where
-// the fitted LTC table is least accurate (see the README's error table).
+// the fitted LTC tables are least accurate (see the README's error tables).
 //
 // Images, written into --out (default: the current directory):
 //   ltc.png        per pixel and light, ltc::shade_polygon_light (specular + diffuse; default
 //                  horizon clipping, one-sided): the default GGX table of an LTC and the clamped
 //                  cosine (the cosine's integral the diffuse term's form factor), the exact polygon integral,
 //                  Schlick's Fresnel through the table's magnitude and fresnel terms (Hill
-//                  2016); for the textured light ltc::shade_textured_quad_light (the same table
-//                  and Fresnel, specular and diffuse) with the ltc::textured_policy of
+//                  2016); for the textured light ltc::shade_textured_quad_light (the one-lobe
+//                  table, the same Fresnel, specular and diffuse) with the ltc::textured_policy of
 //                  --textured-method:
 //                    fetch        (the default) I_D I_L: the exact polygon integral times one
 //                                 trilinear fetch into the prefiltered ltc::light_texture (the
@@ -55,7 +55,7 @@
 //                  names (run it with another --out to keep the default run's): ltc.png and
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png
 //                  do not change. --lobes 1 likewise with ltc::shade_polygon_light_one_lobe, the
-//                  paper's single LTC (the default before issue 16; 0.93-0.95x the default's
+//                  paper's single LTC (the default before issue 16; 0.96-1.00x the default's
 //                  cost in the README's benchmark).
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
 //                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
@@ -133,8 +133,8 @@
 // With --lobes 2 the LTC and batch times, the reference / LTC ratio and the statistics of all
 // lights and of the polygonal lights alone (overall lines and per-tile means) are those of the
 // two-lobe render: a line after the scene's says so, and the LTC time and the headings say
-// "polygonal lights with two lobes" (--lobes 1: "with one lobe"). The default run's lines are
-// as they were before --lobes.
+// "polygonal lights with two lobes" (--lobes 1: "with one lobe"). The default run's lines have
+// the format they had before --lobes; their values are the default table's.
 // --shapes (shapes.hpp, shapes_render.hpp): after the rest, unchanged, a disk, a sphere and a tube
 // light alone on the floor: shapes_ltc.png, shapes_reference.png, shapes_error.png, statistics.
 // Exit status 0, or 1 if an image could not be written or read or a value was not finite, 2

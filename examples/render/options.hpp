@@ -122,7 +122,7 @@ inline void print_help(const char* argv0) {
         "                   the sum of two exactly integrated lobes, about 1.6x the cost). The\n"
         "                   textured light and the --shapes lights stay as they are (one lobe). The\n"
         "                   images keep their names (give another --out to keep both runs'); the LTC\n"
-        "                   and batch times, error images and statistics are then those of that table\n"
+        "                   and batch times, error images and statistics are then those of that table.\n"
         "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"
         "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
         "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"

@@ -9,11 +9,12 @@
 //                   the integrals over lines and ellipses (disks), and the samplers of polygons
 //                   (solid angle, projected solid angle, an LTC restricted to a polygon, area);
 //   ltc/shading/    what a renderer shades with: polygonal (also shadowed: the ratio estimator),
-//                   textured, disk, sphere and tube lights, the GGX table
-//                   fetch, the clipless approximation, structure-of-arrays batches;
+//                   textured, disk, sphere and tube lights, the GGX tables' fetches (the
+//                   default's, an LTC and the cosine; the paper's single LTC; two LTCs), the
+//                   clipless approximation, structure-of-arrays batches;
 //   ltc/fitting/    offline: BRDF models and the fitter that makes the tables;
 //   ltc/reference/  Monte Carlo ground truth, to validate the approximations (and a renderer);
-//   ltc/tables/     generated data (the 64 x 64 GGX table); ltc/detail/: internals.
+//   ltc/tables/     generated data (the GGX tables); ltc/detail/: internals.
 //
 // Including single headers instead keeps compile times down: ltc/shading/ggx_fetch.hpp (and what
 // includes it) parses the 64 x 64 table, ltc/fitting/ pulls in <thread>.

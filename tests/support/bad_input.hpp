@@ -1,5 +1,5 @@
 // Helpers of the bad-input tests (test_bad_input.cpp, test_checked_factories.cpp, and the
-// opt-in tables' tests): the supplement's matrix, a rounding bound for results assembled from
+// two-lobe tables' tests): the supplement's matrix, a rounding bound for results assembled from
 // edge terms, and the degenerate lights every polygon-light shading gives 0 for.
 #pragma once
 

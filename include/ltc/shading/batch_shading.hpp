@@ -46,7 +46,7 @@ void shade_polygon_light_one_lobe(const shading_points<T>& points, const glm::ve
 
 /// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
 /// and the given radiance, like ltc::shade_polygon_light item by item: the default table of an
-/// LTC and the cosine, shade_polygon_light_cosine_lobe bit for bit.
+/// LTC and the cosine: it calls shade_polygon_light_cosine_lobe.
 template <typename Policy = edge_policy::automatic, typename T>
 void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& radiance,
                          const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
@@ -68,7 +68,7 @@ void shade_quad_lights_one_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>& N
 
 /// Shades one point (as ltc::shade_polygon_light takes it) with each of count quad lights: out
 /// receives light i's specular and diffuse at item i (sum them for the point's radiance); the
-/// default table of an LTC and the cosine, shade_quad_lights_cosine_lobe bit for bit.
+/// default table of an LTC and the cosine: it calls shade_quad_lights_cosine_lobe.
 template <typename Policy = edge_policy::automatic, typename T>
 void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
                        const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,

@@ -77,7 +77,7 @@ inline polygon_light_result<T> shade_polygon_light_one_lobe(const glm::vec<3, T>
 }
 
 /// Shading with the library's default GGX table, an LTC and the clamped cosine about the normal
-/// (ltc/shading/cosine_lobe_polygon_light.hpp): shade_polygon_light_cosine_lobe, bit for bit.
+/// (ltc/shading/cosine_lobe_polygon_light.hpp): it calls shade_polygon_light_cosine_lobe.
 /// Against shade_polygon_light_one_lobe: half the error (README, "Shading polygonal lights with
 /// GGX"), for the same integrals and a second table fetch.
 template <typename Policy = edge_policy::automatic, typename T>

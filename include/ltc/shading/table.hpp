@@ -187,6 +187,8 @@ class ltc_table {
     /// fetch_at's reads, each channel the bits fetch_at gives.
     template <typename T>
     ltc_coefficients<T> fetch_scale_at(const position<T>& at) const {
+        static_assert(channel::magnitude == channels - 2 && channel::fresnel == channels - 1,
+                      "interpolate reads the channels from magnitude on");
         T value[channels];
         interpolate(at, value, channel::magnitude);
         ltc_coefficients<T> r;  // m_inv: the identity
