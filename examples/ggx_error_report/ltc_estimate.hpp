@@ -1,6 +1,7 @@
-// ggx_error_report/ltc_estimate.hpp -- the LTC estimate (F0 magnitude + (1 - F0) fresnel) I_ltc of a
-// configuration (F0 = 1 by default: magnitude * I_ltc) with each horizon-clipping method (exact, clip-first, clip-once, sphere, sphere-tab: main.cpp's file
-// comment), from any table (a fetch function), for the whole grid.
+// ggx_error_report/ltc_estimate.hpp -- the LTC estimate (F0 magnitude + (1 - F0) fresnel) I_ltc
+// of a configuration (F0 = 1 by default: magnitude * I_ltc) with each horizon-clipping method
+// (exact, clip-first, clip-once, sphere, sphere-tab: main.cpp's file comment), from any table (a
+// fetch function), for the whole grid.
 #pragma once
 
 #include "grid.hpp"

@@ -15,7 +15,8 @@
 // magnitude * I_ltc(P) of the shipped GGX table (ltc::ggx::fetch; F0 = 1, i.e. no Fresnel,
 // like the ground truth; with --f0 F0 both take Schlick's factor instead, the integral of
 // rho cos (F0 + (1 - F0) (1 - V.H)^5) and (F0 magnitude + (1 - F0) fresnel) I_ltc(P): --f0 0.04
-// is a dielectric's specular term, largely the Fresnel part at grazing views) with each horizon-clipping method of ltc/shading/polygon_light.hpp:
+// is a dielectric's specular term, largely the Fresnel part at grazing views) with each
+// horizon-clipping method of ltc/shading/polygon_light.hpp:
 //
 //   exact        horizon_clipping::ltc_space: the paper's order, exact integral of the LTC
 //   clip-first   horizon_clipping::shading_first: clip to the shading horizon, then M^-1

@@ -7,8 +7,8 @@
 // two-lobe table (ltc/shading/ggx_two_lobe_fetch.hpp), its fit timed here ("two-lobe-fit"), and
 // "cells": per (theta_v, roughness) cell, the one- and two-lobe fits at the cell's exact view
 // and roughness (no table: what any table resolution or spacing could reach at best). And the
-// table of an LTC and the clamped cosine, the default shading's (ltc/shading/ggx_cosine_lobe_fetch.hpp), its fit
-// timed here ("cosine-lobe-fit"), and its per-cell fits ("cells, LTC+cosine").
+// table of an LTC and the clamped cosine, the default shading's
+// (ltc/shading/ggx_cosine_lobe_fetch.hpp), its fit timed here ("cosine-lobe-fit"), and its per-cell fits ("cells, LTC+cosine").
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "report.hpp"

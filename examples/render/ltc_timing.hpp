@@ -68,8 +68,8 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
 }
 
 /// Prints the LTC render's times: in all (the polygonal lights and, with it, the textured light
-/// of ltc.png, named by `method_note`), through the batch API, and with more than one run (--textured-method all) the textured light by
-/// each method.
+/// of ltc.png, named by `method_note`), through the batch API, and with more than one run
+/// (--textured-method all) the textured light by each method.
 inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vector<textured_run>& runs,
                             const std::string& method_note, std::size_t floor_pixels, unsigned threads) {
     const double ltc_seconds = t.seconds, ltc_tex_seconds = textured_seconds(runs);

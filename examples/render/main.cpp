@@ -31,11 +31,11 @@
 // Images, written into --out (default: the current directory):
 //   ltc.png        per pixel and light, ltc::shade_polygon_light (specular + diffuse; default
 //                  horizon clipping, one-sided): the default GGX table of an LTC and the clamped
-//                  cosine (the cosine's integral the diffuse term's form factor), the exact polygon integral,
-//                  Schlick's Fresnel through the table's magnitude and fresnel terms (Hill
-//                  2016); for the textured light ltc::shade_textured_quad_light (the one-lobe
-//                  table, the same Fresnel, specular and diffuse) with the ltc::textured_policy of
-//                  --textured-method:
+//                  cosine (the cosine's integral the diffuse term's form factor), the exact
+//                  polygon integral, Schlick's Fresnel through the table's magnitude and
+//                  fresnel terms (Hill 2016); for the textured light
+//                  ltc::shade_textured_quad_light (the one-lobe table, the same Fresnel, specular
+//                  and diffuse) with the ltc::textured_policy of --textured-method:
 //                    fetch        (the default) I_D I_L: the exact polygon integral times one
 //                                 trilinear fetch into the prefiltered ltc::light_texture (the
 //                                 paper, sections 5.2-5.4);

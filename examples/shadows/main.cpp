@@ -69,8 +69,8 @@
 // ordering: its output byte for byte).
 // With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
 // two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
-// (ltc::analytic_lobes::cosine_lobe, the table of ltc::shade_polygon_light's default), and the samples of (a), (a+) and (d) follow that table's
-// first, or only, LTC; (c), (e) and the reference do not change.
+// (ltc::analytic_lobes::cosine_lobe, the table of ltc::shade_polygon_light's default), and the
+// samples of (a), (a+) and (d) follow that table's first, or only, LTC; (c), (e) and the reference do not change.
 // "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
 // (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
 // shadow and K BRDF rays (the tables' rays/px; (d) with --filter-radius penumbra traces its shadow

@@ -59,10 +59,10 @@ struct lobe_error_summary {
 /// The grazing test's 12 lights (tests/test_two_lobe.cpp): theta_v in {70, 80} deg, roughness in
 /// {0.3, 0.5}, and three 0.5 x 0.25 rectangles facing the origin at distance 1: "mirror"
 /// (azimuth 180 deg, elevation 90 - theta_v), "zenith" (elevation 80 deg, azimuth 0) and "side"
-/// (azimuth 90, elevation 30); seeds 7000, 7001, ... in that order. `errors(theta, r, L, seed)`
-/// returns a lobe_errors (errors_against_truth with the other shading and a specular colour).
+/// (azimuth 90, elevation 30); seeds 7000, 7001, ... in that order. `errors(theta, r, L, seed,
+/// f0)` returns a lobe_errors (errors_against_truth with the other shading), f0 the specular colour.
 template <typename Errors>
-lobe_error_summary grazing_light_errors(Errors&& errors) {
+lobe_error_summary grazing_light_errors(Errors&& errors, double f0) {
     lobe_error_summary s;
     int count = 0;
     for (const double theta : {70.0, 80.0})
@@ -70,7 +70,7 @@ lobe_error_summary grazing_light_errors(Errors&& errors) {
             const std::vector<dvec3> lights[] = {facing_rectangle(180, 90 - theta, 0.5, 0.25), facing_rectangle(0, 80, 0.5, 0.25),
                                                  facing_rectangle(90, 30, 0.5, 0.25)};
             for (const auto& L : lights) {
-                const lobe_errors e = errors(theta, r, L, 7000 + std::uint64_t(count));
+                const lobe_errors e = errors(theta, r, L, 7000 + std::uint64_t(count), f0);
                 s.mean_one += e.one, s.mean_other += e.other;
                 s.worst_one = std::max(s.worst_one, e.one), s.worst_other = std::max(s.worst_other, e.other);
                 ++count;
@@ -78,6 +78,18 @@ lobe_error_summary grazing_light_errors(Errors&& errors) {
         }
     s.mean_one /= count, s.mean_other /= count;
     return s;
+}
+
+/// Prints the summary (`label` names the other shading) and checks the other shading against the
+/// grazing tests' bounds: its mean and worst error, and at most half the one-lobe mean.
+inline void check_grazing_summary(const lobe_error_summary& e, const char* label, double mean_bound,
+                                  double worst_bound) {
+    CAPTURE(label, e.mean_one, e.worst_one, e.mean_other, e.worst_other);
+    WARN("one lobe: mean " << 100 * e.mean_one << "%, worst " << 100 * e.worst_one << "%; " << label << ": mean "
+                           << 100 * e.mean_other << "%, worst " << 100 * e.worst_other << "%");
+    CHECK(e.mean_other <= mean_bound);
+    CHECK(e.worst_other <= worst_bound);
+    CHECK(e.mean_other < 0.5 * e.mean_one);
 }
 
 }  // namespace ltc_test::shading_checks

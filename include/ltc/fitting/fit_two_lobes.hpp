@@ -437,8 +437,9 @@ struct two_lobe_table {
             for (const two_lobe_result& n : nodes) {
                 const glm::dmat3& m = n.m_inv[std::size_t(l)];
                 const double w = l == 0 ? 1 - n.share : n.share;
-                const bool dead = l == 1 && dead_ltc(n);
-                const double fresnel_share = dead_ltc(n) ? 0.0 : n.fresnel_share;
+                const bool ltc_dead = dead_ltc(n);
+                const bool dead = l == 1 && ltc_dead;
+                const double fresnel_share = ltc_dead ? 0.0 : n.fresnel_share;
                 const double p = dead ? 0.0 : premultiply && l == 1 ? n.magnitude * w : 1.0;
                 d.push_back(flushed(m[0][0] * p));
                 d.push_back(flushed(m[0][2] * p));

@@ -60,19 +60,19 @@
 // ratio, the tables measured alike at equal time, README "Shadows"), with options.lobes =
 // analytic_lobes::two the opt-in two-lobe table's (ltc/shading/two_lobe_polygon_light.hpp): the
 // ratio then corrects a closer unshadowed result (the shadows example: RMS bias against the
-// path-traced truth 10.7% with one lobe, 4.8% with two, at K = 16), at the cost of its second
+// path-traced truth 10.7% with one lobe, 4.3% with two, at K = 16), at the cost of its second
 // lobe's integral; the samples then follow its first lobe (sampling the two lobes' mixture
 // measured worse at equal CPU time: README, shadows section). With analytic_lobes::cosine_lobe,
 // the table of an LTC and the clamped cosine that ltc::shade_polygon_light uses
-// (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral; RMS bias 6.6% there): K_s
+// (ltc/shading/cosine_lobe_polygon_light.hpp: no second integral; RMS bias 5.6% there): K_s
 // follows its LTC's part of the specular term only, and the cosine's part joins the diffuse share
 // (K_d), whose technique covers the broad part that the LTC, fitted next to the cosine, leaves out.
 //
 // Outputs: `unshadowed` (= shade_polygon_light_one_lobe, shade_polygon_light_two_lobe or
 // shade_polygon_light_cosine_lobe, the last ltc::shade_polygon_light; horizon clipping ltc_space),
 // `ratio` (the estimator above: biased, consistent, exact when nothing occludes the light),
-// `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the same samples and visibility:
-// sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of the LTC's
+// `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the same
+// samples and visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of the LTC's
 // fitting error), and per term the ratio's two sums (`specular_estimates`, `diffuse_estimates`),
 // for renderers that denoise the shadows as Heitz et al. do: filter each of the two over
 // neighbouring pixels, then ltc::ratio_shading, so that the filter blurs the visibility only,
@@ -127,8 +127,9 @@ enum class diffuse_sampler { light_area, cosine };
 /// The analytic, unshadowed part: the one-lobe GGX table's lobe (the default here), the opt-in
 /// two-lobe table (ltc/shading/two_lobe_polygon_light.hpp; the samples then follow its first lobe,
 /// which the estimator only needs as a density) or the table of an LTC and the cosine, which
-/// ltc::shade_polygon_light uses (ltc/shading/cosine_lobe_polygon_light.hpp; the specular samples follow its LTC, for the
-/// LTC's part of the specular term; the cosine's part joins the diffuse share).
+/// ltc::shade_polygon_light uses (ltc/shading/cosine_lobe_polygon_light.hpp; the specular
+/// samples follow its LTC, for the LTC's part of the specular term; the cosine's part joins the
+/// diffuse share).
 enum class analytic_lobes { one, two, cosine_lobe };
 
 template <typename T>
