@@ -21,7 +21,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 
 #include <glm/glm.hpp>

@@ -8,7 +8,7 @@
 //                  cosine's space, then M)
 //   *_setup        building the sampler for a polygon (clipping, fan, per-triangle constants)
 //   area           ltc::polygon_area_sampler: uniform on the light's area, with its solid-angle pdf
-//   ggx_brdf       GGX visible-normal sampling with its pdf (ltc/fitting/brdf/ggx.hpp)
+//   ggx_brdf       GGX visible-normal sampling with its pdf (ltc/brdf/ggx.hpp)
 //   shade          ltc::shade_polygon_light_one_lobe (no shadows; the shadowed shading's default
 //                  table), and shade_polygon_light_shadowed with K = 4 and 16 samples per lobe
 //                  for both samplers, visibility always true (the shading's own cost, without the
@@ -21,7 +21,7 @@
 #include <ltc/core/ltc_polygon_sampling.hpp>
 #include <ltc/core/polygon_area_sampling.hpp>
 #include <ltc/core/projected_solid_angle_sampling.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>

@@ -21,7 +21,7 @@
 // is 1e-4 (the 2016 release's; later ones use 1e-5, which ltc::brdf::ggx clamps to 1e-4).
 #pragma once
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 
 #include <glm/glm.hpp>

@@ -7,8 +7,8 @@
 // overview of the method) and the text is ltc::fit::table_header_text (ltc/fitting/table_writer.hpp);
 // the output depends only on the options that change the fit (--brdf, --size, --objective), never
 // on --threads: the same binary writes the same bytes with any thread count.
-#include <ltc/fitting/brdf/beckmann.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/fitting/table_writer.hpp>
 
@@ -40,7 +40,7 @@ const char* const usage_text =
     "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
     "ltc::tables::<brdf>_size and ltc::tables::<brdf>_data (N x N nodes x 6 floats: the\n"
     "normalized inverse matrix m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2], the\n"
-    "magnitude and the Fresnel term; layout in ltc/shading/table.hpp).\n"
+    "magnitude and the Fresnel term; layout in ltc/tables/ltc_table.hpp).\n"
     "\n"
     "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2\n"
     "  --out FILE     the header to write ('-' for standard output)\n"

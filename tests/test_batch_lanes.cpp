@@ -1,4 +1,4 @@
-// The shading kernel's lane stages (ltc/detail/batch_simd_shading.inc) against the scalar
+// The shading kernel's lane stages (ltc/shading/detail/batch_simd_shading.inc) against the scalar
 // functions they mirror: the frame (make_shading_frame) and the table fetch (ltc_table::fetch),
 // for every instruction set this machine runs.
 //

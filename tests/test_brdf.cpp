@@ -3,8 +3,8 @@
 // quadrature references of support/brdf_references.hpp (which explains the tolerances). The
 // sampler is tested in test_brdf_sampling.cpp; reciprocity, the closed forms and degenerate
 // input in test_brdf_eval.cpp.
-#include <ltc/fitting/brdf/beckmann.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/ggx.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // Pointwise properties of the microfacet BRDF models of ltc/brdf (ggx, beckmann): reciprocity
 // and mirror symmetry, the robust closed forms against the textbook ones, and degenerate input.
-#include <ltc/fitting/brdf/beckmann.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/ggx.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // The samplers of the microfacet BRDF models of ltc/brdf (ggx, beckmann) against their pdf:
 // chi-square goodness of fit, and the Monte Carlo albedo eval / pdf against the quadrature
 // references of support/brdf_references.hpp (which explains the tolerances).
-#include <ltc/fitting/brdf/beckmann.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/ggx.hpp>
 
 #include <catch2/catch.hpp>
 

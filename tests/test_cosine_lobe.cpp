@@ -5,7 +5,7 @@
 // ground truth where the one-lobe table is weakest.
 #include <catch2/catch.hpp>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>

@@ -4,9 +4,9 @@
 // No 64 x 64 fit happens here: the re-fits are a few rows, the thread test an 8 x 8 table.
 #include <catch2/catch.hpp>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include "support/ggx_table.hpp"
 

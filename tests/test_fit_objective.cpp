@@ -6,7 +6,7 @@
 
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/polygon_light_integrals.hpp>

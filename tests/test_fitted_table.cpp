@@ -2,7 +2,7 @@
 // energy over the hemisphere and over polygons, and the cosine at roughness 1.
 #include <catch2/catch.hpp>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/shading/ggx_fetch.hpp>

@@ -1,9 +1,9 @@
-// Tests of ltc/shading/table.hpp and ltc/shading/ggx_fetch.hpp: the lookup of the shipped GGX
+// Tests of ltc/tables/ltc_table.hpp and ltc/shading/ggx_fetch.hpp: the lookup of the shipped GGX
 // table, exact at nodes, bilinear between them, clamped and finite everywhere.
 #include <catch2/catch.hpp>
 
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include "support/ggx_table.hpp"
 

@@ -8,7 +8,7 @@
 // seed chosen (and, being deterministic, either always or never).
 #include <catch2/catch.hpp>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/ltc.hpp>
 

@@ -1,5 +1,5 @@
 // The variance that the restricted-LTC sampler (ltc/core/ltc_polygon_sampling.hpp) buys: one-sample
-// estimates of int_P f, f = rho cos of GGX (ltc/fitting/brdf/ggx.hpp, alpha = roughness^2, V =
+// estimates of int_P f, f = rho cos of GGX (ltc/brdf/ggx.hpp, alpha = roughness^2, V =
 // (sin theta_v, 0, cos theta_v)), for the nine lobes x three polygons of
 // support/ltc_sampling_cases.hpp, with
 //   (a) the LTC of ltc::ggx::fetch restricted to P: f(w) / pdf, w ~ D / I_D;
@@ -11,7 +11,7 @@
 
 #include <ltc/core/ltc_polygon_sampling.hpp>
 #include <ltc/core/polygon_area_sampling.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 // integral over a small documented grid.
 #include <catch2/catch.hpp>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/ltc.hpp>
 #include <ltc/shading/polygon_light.hpp>

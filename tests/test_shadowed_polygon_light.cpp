@@ -34,7 +34,7 @@
 #include "support/rng.hpp"
 
 #include <ltc/core/polygon.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>

@@ -12,9 +12,9 @@
 
 #include <ltc/core/form_factor.hpp>
 #include <ltc/core/sidedness.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
-#include <ltc/shading/sphere_form_factor.hpp>
+#include <ltc/core/sphere_form_factor.hpp>
 
 #include <glm/glm.hpp>
 

@@ -9,7 +9,7 @@
 //   - tube: test_line_integral.cpp's bound for (L2), 32 u kappa (I + S), kappa = 1 + (|p|max + |P|) / d,
 //     S the integral of 1/pi in place of the cosine (whole segment: a bound of the clipped one's);
 //     plus 4 u I for 2 r * albedo * radiance * I. The worst observed error / tolerance is printed.
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/line_light.hpp>

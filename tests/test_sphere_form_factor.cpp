@@ -1,4 +1,4 @@
-// Tests of ltc/shading/sphere_form_factor.hpp and ltc/shading/sphere_table.hpp (namespace
+// Tests of ltc/core/sphere_form_factor.hpp and ltc/shading/sphere_table.hpp (namespace
 // ltc::clipless): the analytic horizon-clipped sphere form factor (against the production note's
 // literal formula, an independent closed form, and exact integrals of polygons that sandwich a
 // spherical cap), and the 32 x 32 table (against a derived interpolation bound). The clipless
@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <ltc/shading/clipless.hpp>
-#include <ltc/shading/sphere_form_factor.hpp>
+#include <ltc/core/sphere_form_factor.hpp>
 #include <ltc/shading/sphere_table.hpp>
 #include <ltc/ltc.hpp>
 

@@ -1,7 +1,7 @@
 // Tests of the Monte Carlo reference of the textured light, ltc/reference/textured_ground_truth.hpp:
 // a constant texture against the exact LTC integral, a gradient texture against Gauss-Legendre
 // quadrature.
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/textured_ground_truth.hpp>
 
 #include "support/gauss_legendre.hpp"

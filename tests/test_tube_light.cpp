@@ -3,7 +3,7 @@
 // within its radius) against the openings' disk form factors, (c) the ribbon is shade_polygon_light_one_lobe
 // of the quad, bit for bit, (d) degenerate and huge input, (e) GGX against Monte Carlo of the real
 // cylinder within examples/shape_error_report's measurements.
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
 #include <ltc/shading/polygon_light.hpp>

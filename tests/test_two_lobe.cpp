@@ -4,7 +4,7 @@
 // and the two lobes against the Monte Carlo GGX ground truth where one lobe is weakest.
 #include <catch2/catch.hpp>
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/ggx_fetch.hpp>

@@ -5,10 +5,10 @@
 #include "report.hpp"
 #include "statistics.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <chrono>
 #include <cstddef>

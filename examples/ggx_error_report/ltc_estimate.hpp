@@ -8,7 +8,7 @@
 
 #include <ltc/shading/clipless.hpp>
 #include <ltc/shading/polygon_light.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <glm/glm.hpp>
 

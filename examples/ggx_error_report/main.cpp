@@ -60,12 +60,12 @@
 #include "report.hpp"
 #include "statistics.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
-#include <ltc/fitting/brdf/schlick.hpp>
+#include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/schlick.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <algorithm>
 #include <chrono>

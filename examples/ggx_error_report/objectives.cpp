@@ -14,13 +14,13 @@
 #include "report.hpp"
 #include "statistics.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <glm/glm.hpp>
 

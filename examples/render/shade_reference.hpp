@@ -13,7 +13,7 @@
 #include "scene.hpp"
 
 #include <ltc/core/polygon.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/reference/textured_ground_truth.hpp>
 #include <ltc/shading/polygon_light.hpp>
@@ -26,7 +26,7 @@
 
 namespace render {
 
-/// The GGX model of ltc/fitting/brdf/ggx.hpp weighted by Schlick's (1 - V.H)^5: the integrand of the
+/// The GGX model of ltc/brdf/ggx.hpp weighted by Schlick's (1 - V.H)^5: the integrand of the
 /// LTC table's "fresnel" channel. Same sampling and density as GGX (the weight is in [0, 1]).
 struct ggx_schlick_weight {
     using model = ltc::brdf::ggx<double>;

@@ -23,7 +23,7 @@
 #include "scene.hpp"
 #include "shade_reference.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/sphere_light.hpp>
@@ -75,7 +75,7 @@ inline vec3 shade_ltc_shape(const scene& s, const shape_lights& L, const pixel_h
     return r.specular + r.diffuse;
 }
 
-/// The Lambertian lobe cos / pi as a model of ltc/fitting/brdf/model.hpp (cosine sampling).
+/// The Lambertian lobe cos / pi as a model of ltc/brdf/model.hpp (cosine sampling).
 struct lambert_model {
     static double eval(const dvec3&, const dvec3& L, double) { return L.z > 0 ? L.z / pi : 0.0; }
     static double pdf(const dvec3&, const dvec3& L, double) { return L.z > 0 ? L.z / pi : 0.0; }

@@ -20,7 +20,7 @@
 #include "screen_order.hpp"
 #include "tracer.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>

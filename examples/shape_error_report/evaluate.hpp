@@ -12,12 +12,12 @@
 #include <ltc/core/form_factor.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/line_light.hpp>
-#include <ltc/shading/sphere_form_factor.hpp>
+#include <ltc/core/sphere_form_factor.hpp>
 #include <ltc/shading/sphere_light.hpp>
 #include <ltc/shading/tube_light.hpp>
 

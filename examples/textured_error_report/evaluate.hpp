@@ -5,7 +5,7 @@
 
 #include "setup.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/textured_ground_truth.hpp>
 #include <ltc/shading/light_texture.hpp>
 #include <ltc/shading/quick_cells.hpp>

@@ -37,7 +37,7 @@
 #include <ltc/core/polygon_area_sampling.hpp>
 #include <ltc/core/screen_order.hpp>
 
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
@@ -59,9 +59,9 @@
 #include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
 
-#include <ltc/fitting/brdf/model.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
-#include <ltc/fitting/brdf/beckmann.hpp>
+#include <ltc/brdf/model.hpp>
+#include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
 #include <ltc/fitting/fit.hpp>
 
 #include <ltc/reference/ground_truth.hpp>

@@ -1,3 +1,3 @@
-// ltc/table.hpp -- deprecated path, kept through ltc 0.x: include <ltc/shading/table.hpp>.
+// ltc/table.hpp -- deprecated path, kept through ltc 0.x: include <ltc/tables/ltc_table.hpp>.
 #pragma once
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>

@@ -1,4 +1,4 @@
-// The shading kernel's lane stages (ltc/detail/batch_simd_shading.inc) run on their own, for each
+// The shading kernel's lane stages (ltc/shading/detail/batch_simd_shading.inc) run on their own, for each
 // instruction set, so that tests can compare them with the scalar functions they mirror and shade
 // with the very frame and coefficients the kernel used.
 #pragma once

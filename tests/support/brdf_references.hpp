@@ -26,8 +26,8 @@
 //   - Chi-square: below the p = 1e-4 critical value (Wilson-Hilferty approximation).
 #pragma once
 
-#include <ltc/fitting/brdf/beckmann.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/ggx.hpp>
 
 #include "support/brdf_quadrature.hpp"
 

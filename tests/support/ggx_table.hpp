@@ -4,7 +4,7 @@
 
 #include <ltc/fitting/fit.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 namespace ltc_test::table_checks {
 

@@ -5,8 +5,8 @@
 
 #include "support/shading_scenes.hpp"
 
-#include <ltc/fitting/brdf/ggx.hpp>
-#include <ltc/fitting/brdf/schlick.hpp>
+#include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/schlick.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/shading/polygon_light.hpp>
 
@@ -28,7 +28,7 @@ struct lobe_errors {
 /// ltc::shade_polygon_light_one_lobe (P, N, V, roughness, F0, albedo, radiance, vertices, n, side; called
 /// at the origin, N = z, no diffuse, one-sided), for the light L (vertices facing the origin) at
 /// view angle theta (deg) and roughness r, with the specular colour f0 (1: no Fresnel term;
-/// otherwise Schlick's factor in the ground truth, ltc/fitting/brdf/schlick.hpp); ground truth by
+/// otherwise Schlick's factor in the ground truth, ltc/brdf/schlick.hpp); ground truth by
 /// ltc::ground_truth::integrate (MIS, 2^16 iterations, the given seed; relative standard error
 /// below 0.5%, checked).
 template <typename Other>

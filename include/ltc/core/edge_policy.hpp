@@ -36,7 +36,7 @@ LTC_HOST_DEVICE LTC_INLINE T symmetric_extension(T c, const glm::vec<3, T>& axb,
 }
 
 /// The element type of V: V itself for a scalar, the lane type for a compiler vector
-/// (ltc/detail/simd.hpp), so that a policy's positive_branch serves both.
+/// (ltc/shading/detail/simd.hpp), so that a policy's positive_branch serves both.
 template <typename V, typename = void>
 struct scalar_of {
     using type = V;
@@ -50,7 +50,7 @@ using scalar_of_t = typename scalar_of<V>::type;
 
 /// A policy made of a branch-free fit f of theta / sin(theta) on c >= 0, extended to c < 0 by
 /// symmetric_extension. Fit::evaluate_positive_branch(y, f) takes y = 1 - |c| as a scalar or a
-/// SIMD vector (ltc/detail/simd.hpp: the batch kernels evaluate it lane-wise), by reference: a
+/// SIMD vector (ltc/shading/detail/simd.hpp: the batch kernels evaluate it lane-wise), by reference: a
 /// vector wider than the baseline instruction set may not be passed by value to a function
 /// compiled for it.
 template <typename Fit>

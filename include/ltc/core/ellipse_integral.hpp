@@ -19,7 +19,7 @@
 // chord is a straight edge: eq. (11)'s edge term, its angle (in closed form, so that it stays
 // accurate between nearly antipodal ends). The arc is integrated in closed form in the frame of
 // the cone that the ellipse subtends, where the integrand is (A + B cos th + C sin th) /
-// (P cos^2 th + Q sin^2 th): an angle plus an atan or atanh (ltc/detail/ellipse_cone.hpp derives
+// (P cos^2 th + Q sin^2 th): an angle plus an atan or atanh (ltc/core/detail/ellipse_cone.hpp derives
 // it). Finding that frame takes a 1D secular equation (Newton from a lower bound, 2-4 steps) and
 // a 2 x 2 SVD, in which every quantity is a sum or product of positive terms. Why not quadrature:
 // next to the disk the integrand peaks sharply and Gauss-Legendre needs adaptive subdivision to
@@ -56,10 +56,10 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
-#include <ltc/detail/ellipse_cone.hpp>
+#include <ltc/core/detail/ellipse_cone.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/detail/vertices.hpp>
-#include <ltc/shading/sphere_form_factor.hpp>
+#include <ltc/core/detail/vertices.hpp>
+#include <ltc/core/sphere_form_factor.hpp>
 
 #include <glm/glm.hpp>
 

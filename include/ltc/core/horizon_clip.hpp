@@ -6,7 +6,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/detail/vertices.hpp>
+#include <ltc/core/detail/vertices.hpp>
 
 #include <glm/glm.hpp>
 

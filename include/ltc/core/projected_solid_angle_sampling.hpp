@@ -13,7 +13,7 @@
 // Method. The polygon is clipped to z >= 0 (Sutherland-Hodgman, as eq. 11 requires) and cut
 // into a fan of triangles from its first vertex; u.x picks a triangle with probability
 // proportional to its projected solid angle (Lambert's formula, the edge terms of eq. 11) and is
-// rescaled to [0, 1) inside it. In the triangle (ltc/detail/projected_triangle.hpp), u.x fixes
+// rescaled to [0, 1) inside it. In the triangle (ltc/core/detail/projected_triangle.hpp), u.x fixes
 // the great circle through the apex that cuts off the fraction u.x of its projected solid angle
 // (closed form, one Newton solve in the angle at the apex: its derivative is a closed form too),
 // and u.y the point along that arc (the arc's cosine-weighted length, a second Newton solve).
@@ -39,7 +39,7 @@
 #include <ltc/config.hpp>
 #include <ltc/core/horizon_clip.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/detail/projected_triangle.hpp>
+#include <ltc/core/detail/projected_triangle.hpp>
 
 #include <glm/glm.hpp>
 

@@ -3,15 +3,15 @@
 // paper's shader does), then five edge terms without a branch on the vertex count. form_factor
 // (ltc/core/form_factor.hpp) takes it for n = 4 and falls back to the general path where it
 // declines. In float with the symmetric fits (the float default) it runs on SIMD lanes instead,
-// one edge per lane (ltc/detail/quad_lanes.hpp).
+// one edge per lane (ltc/core/detail/quad_lanes.hpp).
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/core/edge_integral.hpp>
 #include <ltc/core/horizon_clip.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/detail/quad_lanes.hpp>
-#include <ltc/detail/vertices.hpp>
+#include <ltc/core/detail/quad_lanes.hpp>
+#include <ltc/core/detail/vertices.hpp>
 
 #include <glm/glm.hpp>
 

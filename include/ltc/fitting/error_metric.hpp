@@ -25,7 +25,7 @@
 // tails); we keep it and report the result in both L1 and L3 (node_result, measure_error).
 #pragma once
 
-#include <ltc/fitting/brdf/model.hpp>
+#include <ltc/brdf/model.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>
 #include <ltc/detail/math.hpp>
 

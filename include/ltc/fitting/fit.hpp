@@ -1,11 +1,11 @@
 // ltc/fitting/fit.hpp -- fitting Linearly Transformed Cosines to a BRDF (paper section 4), and whole
-// tables of them (the paper's 64 x 64 GGX table, or any BRDF model of ltc/fitting/brdf/model.hpp).
+// tables of them (the paper's 64 x 64 GGX table, or any BRDF model of ltc/brdf/model.hpp).
 //
 //   #include <ltc/fitting/fit.hpp>
-//   #include <ltc/fitting/brdf/ggx.hpp>
+//   #include <ltc/brdf/ggx.hpp>
 //   ltc::fit::options opt;                                   // 64 x 64, all cores
 //   ltc::fit::table tab = ltc::fit::fit_table<ltc::brdf::ggx>(opt);
-//   std::vector<float> data = tab.packed();                  // the layout of ltc/shading/table.hpp
+//   std::vector<float> data = tab.packed();                  // the layout of ltc/tables/ltc_table.hpp
 //   ltc::ltc_table view(data.data(), tab.size, tab.size);    // then view.fetch(cos, roughness)
 //   std::string text = ltc::fit::table_header_text("ggx", "GGX", tab, opt);  // as ltc/tables/ggx.hpp
 //
@@ -41,7 +41,7 @@
 // table.
 #pragma once
 
-#include <ltc/fitting/brdf/model.hpp>
+#include <ltc/brdf/model.hpp>
 #include <ltc/fitting/options.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>
 #include <ltc/fitting/moments.hpp>
@@ -55,4 +55,4 @@
 #include <ltc/fitting/table_writer.hpp>
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>

@@ -12,7 +12,7 @@
 // rotationally symmetric and M = diag(m, m, 1) has one parameter.
 #pragma once
 
-#include <ltc/fitting/brdf/model.hpp>
+#include <ltc/brdf/model.hpp>
 #include <ltc/fitting/error_metric.hpp>
 #include <ltc/fitting/fit_integrals.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>

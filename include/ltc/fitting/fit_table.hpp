@@ -1,6 +1,6 @@
 // ltc/fitting/fit_table.hpp -- fitting a whole N x N table of LTCs (fit_table, on std::threads),
 // its parts (fit_normal_incidence, fit_row) and the result (table; packed() gives the layout of
-// ltc/shading/table.hpp). The shipped 64 x 64 GGX table (ltc/tables/ggx.hpp) is
+// ltc/tables/ltc_table.hpp). The shipped 64 x 64 GGX table (ltc/tables/ggx.hpp) is
 // fit_table<ltc::brdf::ggx>(options{}), written out by ltc/fitting/table_writer.hpp.
 //
 // Order. As in the paper's code, the normal-incidence nodes (t = 0; the coordinates of node
@@ -14,7 +14,7 @@
 
 #include <ltc/fitting/fit_node.hpp>
 #include <ltc/fitting/options.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -42,7 +42,7 @@ struct table {
     const node_result& at(int t, int a) const { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
     node_result& at(int t, int a) { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
 
-    /// The size * size * 6 floats of ltc/shading/table.hpp.
+    /// The size * size * 6 floats of ltc/tables/ltc_table.hpp.
     std::vector<float> packed() const {
         std::vector<float> d;
         d.reserve(nodes.size() * channel::count);

@@ -49,8 +49,8 @@
 // D_l(N) > 0 measured while writing it were all worse on one grid or the other.
 #pragma once
 
-#include <ltc/fitting/brdf/model.hpp>
-#include <ltc/fitting/brdf/schlick.hpp>
+#include <ltc/brdf/model.hpp>
+#include <ltc/brdf/schlick.hpp>
 #include <ltc/fitting/error_metric.hpp>
 #include <ltc/fitting/fit_node.hpp>
 #include <ltc/fitting/fit_table.hpp>
@@ -235,7 +235,7 @@ namespace detail {
 /// (1 + cos beta) / 2 <= 1 of their mass above the horizon, beta the angle of M's third row to
 /// z, so the shading's Fresnel energy over the whole hemisphere does move with s_F, as its
 /// magnitude's does with s), G_k the Fresnel part's integrals (brdf::fresnel_part,
-/// ltc/fitting/brdf/schlick.hpp), I_lk lobe l's (exact edge terms: once per node, their cost
+/// ltc/brdf/schlick.hpp), I_lk lobe l's (exact edge terms: once per node, their cost
 /// does not matter here).
 /// Closed form of this convex quadratic in s_F: s_F = sum a_k b_k / sum a_k^2, a_k =
 /// F (I_2k - I_1k) / w_k, b_k = (G_k - F I_1k) / w_k, clamped to [0, 1] (the constrained
@@ -405,7 +405,7 @@ struct two_lobe_table {
 
     const two_lobe_result& at(int t, int a) const { return nodes[std::size_t(a) * std::size_t(size) + std::size_t(t)]; }
 
-    /// Two tables of the layout of ltc/shading/table.hpp, one after the other (2 size^2 6
+    /// Two tables of the layout of ltc/tables/ltc_table.hpp, one after the other (2 size^2 6
     /// floats): lobe l's normalized M_l^-1, the magnitude times its share ((1 - s) for lobe 1, s
     /// for lobe 2) and the Fresnel term times its share of that ((1 - s_F), s_F), so that (with
     /// two_ltcs) each is an ordinary ltc_table and the shading is the sum of the two lobes' (the

@@ -66,7 +66,7 @@
 
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
-#include <ltc/fitting/brdf/schlick.hpp>
+#include <ltc/brdf/schlick.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>
 
 #include <glm/glm.hpp>

@@ -2,7 +2,7 @@
 // a fitted table (node_x, node_cos_theta, node_roughness, node_alpha).
 //
 // Node (t, a) of an N x N table has x = t / (N - 1), cos theta_v = max(1 - x^2, cos_min)
-// and roughness r = a / (N - 1), alpha = max(r^2, alpha_min) (see ltc/shading/table.hpp).
+// and roughness r = a / (N - 1), alpha = max(r^2, alpha_min) (see ltc/tables/ltc_table.hpp).
 #pragma once
 
 #include <algorithm>

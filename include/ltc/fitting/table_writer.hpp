@@ -6,7 +6,7 @@
 //       << ltc::fit::table_header_text("ggx", "GGX microfacet NDF, ...", tab, opt);
 //
 // The header defines ltc::tables::<name>_size and ltc::tables::<name>_data (size x size nodes x
-// 6 floats in the layout of ltc/shading/table.hpp, each float written with 9 significant digits,
+// 6 floats in the layout of ltc/tables/ltc_table.hpp, each float written with 9 significant digits,
 // so that it reads back bit for bit), preceded by a comment that records the options of the fit
 // and its error. The text is a function of the table and the options only: examples/ltc_fit.cpp
 // writes the shipped table with it, and CI checks that it regenerates byte for byte.
@@ -15,7 +15,7 @@
 #include <ltc/fitting/fit_table.hpp>
 #include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/fitting/options.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -89,7 +89,7 @@ inline std::string table_header_text(const std::string& brdf, const std::string&
       << ") and a along roughness = a / " << (n - 1) << ".\n"
       << "// Channels: m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] (GLM m[column][row]) of the inverse\n"
       << "// LTC matrix divided by m_inv[1][1]; magnitude = integral of rho cos; fresnel = integral of\n"
-      << "// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/shading/table.hpp) or ltc::" << brdf << "::fetch.\n"
+      << "// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/tables/ltc_table.hpp) or ltc::" << brdf << "::fetch.\n"
       << "// Fit (ltc/fitting/fit.hpp): M = R [m11 0 m13; 0 m22 0; m31 0 1], R the rotation to the average direction,\n"
       << "// minimizing the L3 error integral |rho cos - magnitude D|^3 (MIS over " << opt.error_samples << " x "
       << opt.error_samples << " BRDF and LTC samples,\n"
@@ -128,7 +128,7 @@ inline std::string table_header_text(const std::string& brdf, const std::string&
 }
 
 /// The text of ltc/tables/<brdf>_two_lobe.hpp for the two-lobe table `tab` fitted with `opt`
-/// (ltc/fitting/fit_two_lobes.hpp): two tables of the layout of ltc/shading/table.hpp, one per
+/// (ltc/fitting/fit_two_lobes.hpp): two tables of the layout of ltc/tables/ltc_table.hpp, one per
 /// lobe, each lobe's magnitude multiplied by its share and its Fresnel term by its share of that
 /// (two_lobe_result::fresnel_share). For the model
 /// ltc_and_cosine (tab.model), ltc/tables/<brdf>_cosine_lobe.hpp: lobe 1 the cosine (m_inv = I),
@@ -158,7 +158,7 @@ inline std::string two_lobe_table_header_text(const std::string& brdf, const std
       << opt.error_samples << " x " << opt.error_samples << "\n"
       << "// BRDF and per-lobe samples, " << opt.rounds << " rounds, Nelder-Mead tolerance " << opt.tolerance
       << "). The data are two tables of the layout of\n"
-      << "// ltc/shading/table.hpp, lobe 1's then lobe 2's (" << n << " x " << n
+      << "// ltc/tables/ltc_table.hpp, lobe 1's then lobe 2's (" << n << " x " << n
       << " nodes, 6 floats each: data[l * " << n << " * " << n << " * 6 + ((a * " << n << ") + t) * 6 + channel]),\n"
       << "// node t along u = sqrt(1 - cos theta_v) = t / " << (n - 1) << " (cos theta_v clamped to at least "
       << opt.cos_theta_min << ") and a along roughness = a / " << (n - 1) << ";\n"

@@ -2,7 +2,7 @@
 // model's rho(V, L) cos(theta_L) over a spherical polygon, with its standard error.
 //
 //   #include <ltc/reference/ground_truth.hpp>
-//   #include <ltc/fitting/brdf/ggx.hpp>
+//   #include <ltc/brdf/ggx.hpp>
 //   ltc::ground_truth::options opt;                      // samples, seed, heuristic, ...
 //   ltc::ground_truth::estimate e = ltc::ground_truth::integrate(
 //       ltc::brdf::ggx<double>{}, V, alpha, vertices, n, opt);
@@ -10,7 +10,7 @@
 //
 // This is the reference that the LTC shading is measured against (paper section 4's target,
 // integrated over a polygon instead of fitted). It works in double, in the local shading frame
-// of ltc/fitting/brdf/model.hpp (N = +z, V.z > 0), and is not meant for a renderer's hot path (it
+// of ltc/brdf/model.hpp (N = +z, V.z > 0), and is not meant for a renderer's hot path (it
 // allocates one small vector per polygon).
 //
 // Estimator. Each iteration draws one direction from each of two techniques and combines them
@@ -89,7 +89,7 @@ struct estimate {
 
 /// Monte Carlo estimate of int_P model.eval(V, L, alpha) dL over the spherical polygon
 /// vertices[0..n) (local frame, N = +z). Model: any type with eval/pdf/sample as in
-/// ltc/fitting/brdf/model.hpp for T = double, called through an instance so that stateful models work.
+/// ltc/brdf/model.hpp for T = double, called through an instance so that stateful models work.
 template <typename Model>
 estimate integrate(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3* vertices,
                    std::size_t n, const options& opt = {}) {

@@ -8,7 +8,7 @@
 //       ltc::textured_ground_truth::brdf_lobe<ltc::brdf::ggx<double>>{V, alpha}, quad, radiance, opt);
 //   // e.mean +- e.standard_error (per channel)
 //
-// Frame: the local shading frame of ltc/fitting/brdf/model.hpp (shading point at the origin, N = +z).
+// Frame: the local shading frame of ltc/brdf/model.hpp (shading point at the origin, N = +z).
 // The quad quad[0..3] carries uv (0,0), (1,0), (1,1), (0,1) on the parallelogram q_0 + u (q_1 -
 // q_0) + v (q_3 - q_0), the mapping of ltc/shading/textured_light.hpp. The integral is over the set of
 // directions that hit the quad, whatever its orientation (two-sided).
@@ -52,7 +52,7 @@ struct estimate {
     std::size_t samples = 0;
 };
 
-/// rho(V, w) cos theta_w of a BRDF model (ltc/fitting/brdf/model.hpp) for the view V and alpha.
+/// rho(V, w) cos theta_w of a BRDF model (ltc/brdf/model.hpp) for the view V and alpha.
 template <typename Model>
 struct brdf_lobe {
     glm::dvec3 V{0.0, 0.0, 1.0};

@@ -13,8 +13,8 @@
 // float (float-accurate, the fastest), exact in double (which has no SIMD kernel: pass
 // minimax_rational or polynomial for double lanes at float accuracy).
 //
-// How (ltc/detail/batch_simd_kernel.inc): explicit SIMD through the compiler's vector types
-// (ltc/detail/simd.hpp says why not a SIMD library), one kernel compiled for three instruction sets
+// How (ltc/shading/detail/batch_simd_kernel.inc): explicit SIMD through the compiler's vector types
+// (ltc/shading/detail/simd.hpp says why not a SIMD library), one kernel compiled for three instruction sets
 // and chosen at run time, so that a build without -march runs 8 or 16 floats wide on an AVX2 or
 // AVX-512 CPU:
 //   isa::baseline  16-byte vectors: 4 floats (SSE2 on x86-64, NEON on AArch64), 2 doubles;
@@ -39,9 +39,9 @@
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/core/sidedness.hpp>
-#include <ltc/detail/batch_scalar.hpp>
-#include <ltc/detail/batch_simd.hpp>
-#include <ltc/detail/simd.hpp>
+#include <ltc/shading/detail/batch_scalar.hpp>
+#include <ltc/shading/detail/batch_simd.hpp>
+#include <ltc/shading/detail/simd.hpp>
 #include <ltc/shading/batch_soa.hpp>  // matrices, polygon_soa, quad_soa, ngon_soa
 
 #include <cstddef>

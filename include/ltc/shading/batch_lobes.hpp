@@ -6,7 +6,7 @@
 // Item i gets what the scalar shading gives for it with horizon_clipping::ltc_space, up to
 // rounding (tests/test_batch_shading.cpp derives the tolerance): the frame, the table fetch, the
 // form factor E and the LTC integrals of eq. (3). One point per SIMD lane
-// (ltc/detail/batch_simd_shading.inc), with the instruction sets of ltc/shading/batch.hpp
+// (ltc/shading/detail/batch_simd_shading.inc), with the instruction sets of ltc/shading/batch.hpp
 // (ltc::batch::isa, run-time dispatch); points the kernel hands back and the last count % width
 // go through the scalar function. Policy: as in ltc/shading/batch.hpp (edge_policy::automatic by
 // default; policies without a SIMD kernel shade every point with the scalar function).
@@ -15,7 +15,7 @@
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/core/sidedness.hpp>
-#include <ltc/detail/batch_simd.hpp>
+#include <ltc/shading/detail/batch_simd.hpp>
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_soa.hpp>
 #include <ltc/shading/polygon_light_radiance.hpp>
@@ -46,7 +46,7 @@ inline void write(const shading_results<T>& out, std::size_t i, const polygon_li
 namespace detail {
 
 /// The batch shading of one polygonal light with the sum of the LTCs of Lobes tables: the SIMD
-/// kernel (ltc/detail/batch_simd_shading.inc) for the full vectors of points, then
+/// kernel (ltc/shading/detail/batch_simd_shading.inc) for the full vectors of points, then
 /// scalar(frame, i) for the tail and for the points it hands back. With Cosine, tables[0] is the
 /// cosine lobe's (ltc/shading/ggx_cosine_lobe_fetch.hpp), integrated as the form factor.
 template <typename Policy, int Lobes, bool Cosine = false, typename T, typename Scalar>
@@ -96,7 +96,7 @@ void shade_polygon_light_lobes(const ltc_table* const (&tables)[Lobes], const sh
 
 }  // namespace detail
 
-/// The one-lobe batch shading with any LTC table (ltc/shading/table.hpp) in place of the GGX table:
+/// The one-lobe batch shading with any LTC table (ltc/tables/ltc_table.hpp) in place of the GGX table:
 /// item i gets ltc::shade_polygon_light(frame, table.fetch(frame.cos_theta_v, roughness), ...)
 /// up to rounding (the same kernel).
 template <typename Policy = edge_policy::automatic, typename T>

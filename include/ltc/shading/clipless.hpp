@@ -17,7 +17,7 @@
 // (the sign: see "Orientation" in ltc/shading/equivalent_sphere.hpp).
 //
 // The pieces, each of which can be included on its own:
-//   ltc/shading/sphere_form_factor.hpp  sphere_form_factor: the sphere's clipped form factor
+//   ltc/core/sphere_form_factor.hpp  sphere_form_factor: the sphere's clipped form factor
 //                                       (Snyder 1996), evaluated without cancellation
 //   ltc/shading/sphere_table.hpp        the same as a 32 x 32 table (sphere_table,
 //                                       fill_sphere_table, sphere_form_factor_table)
@@ -44,7 +44,7 @@
 #pragma once
 
 #include <ltc/shading/equivalent_sphere.hpp>   // equivalent_sphere, sphere_of_polygon
-#include <ltc/shading/sphere_form_factor.hpp>  // sphere_form_factor
+#include <ltc/core/sphere_form_factor.hpp>  // sphere_form_factor
 #include <ltc/shading/sphere_table.hpp>        // sphere_table, fill_sphere_table, sphere_form_factor_table
 
 #include <ltc/core/clamped_cosine.hpp>

@@ -25,7 +25,7 @@
 // README, "Shading polygonal lights with GGX".
 #pragma once
 
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 #include <ltc/tables/ggx_cosine_lobe.hpp>
 
 #include <array>

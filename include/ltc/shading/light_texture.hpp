@@ -60,7 +60,7 @@
 // (the output count falls by 4 when the kernel doubles), O(n^2 log n) for the stack; in the
 // margin the kernel width grows with d, O(n^3 margin^2) per level in the worst case (level 0).
 // Rows and columns are split over std::thread::hardware_concurrency() threads (the 1D taps and
-// the thread split: ltc/detail/texture_filter.hpp). Measured by
+// the thread split: ltc/shading/detail/texture_filter.hpp). Measured by
 // examples/textured_error_report/ on 2 hardware threads: a 1024 x 1024 image, 13 levels,
 // 0.74 s at the default margin 0.125 and 3.3 s at margin 0.25 (the margin dominates).
 //
@@ -74,7 +74,7 @@
 #pragma once
 
 #include <ltc/config.hpp>
-#include <ltc/detail/texture_filter.hpp>  // texture_axis, gaussian_taps, parallel_for, lerp_exact
+#include <ltc/shading/detail/texture_filter.hpp>  // texture_axis, gaussian_taps, parallel_for, lerp_exact
 #include <ltc/shading/cell_pyramid.hpp>
 
 #include <glm/glm.hpp>

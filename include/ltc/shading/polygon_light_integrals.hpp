@@ -55,7 +55,7 @@
 // next stage, and the closing edges are processed last), so it also runs in O(1) memory.
 #pragma once
 
-#include <ltc/detail/polygon_stages.hpp>  // edge_sum, clip_stage, transform_stage, tee_stage
+#include <ltc/core/detail/polygon_stages.hpp>  // edge_sum, clip_stage, transform_stage, tee_stage
 #include <ltc/shading/shading_frame.hpp>  // shading_frame
 
 #include <ltc/core/clamped_cosine.hpp>

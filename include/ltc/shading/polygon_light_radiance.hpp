@@ -15,7 +15,7 @@
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/core/sidedness.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <glm/glm.hpp>
 

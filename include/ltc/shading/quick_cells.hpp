@@ -10,7 +10,7 @@
 // cell of largest bound range I_D (ltc/shading/textured_cells.hpp) is split into its children,
 // and either the cell of second largest bound or the split cell's child of largest range too
 // (a second call of up to 8 cells): at most 22 leaves and 24 polygon integrals. Each call's
-// latency, not its width, sets the cost (cell_integrals in ltc/detail/cell_quadtree.hpp), so
+// latency, not its width, sets the cost (cell_integrals in ltc/shading/detail/cell_quadtree.hpp), so
 // the number of calls is fixed, where the adaptive quadtree of textured_cells.hpp needs one per
 // level below its first.
 //
@@ -33,7 +33,7 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
-#include <ltc/detail/cell_quadtree.hpp>
+#include <ltc/shading/detail/cell_quadtree.hpp>
 #include <ltc/shading/cell_pyramid.hpp>
 #include <ltc/shading/light_texture.hpp>
 #include <ltc/shading/textured_cells.hpp>

@@ -37,7 +37,7 @@
 //   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
 //                density |x - P|^2 / (A |cos theta_x|), for both terms: the common renderer
 //                baseline.
-// f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/fitting/brdf/ggx.hpp,
+// f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/brdf/ggx.hpp,
 // alpha = roughness^2) for the specular term, cos / pi for the diffuse one; the ratio corrects
 // the analytic result for visibility only. The directions are a rank-1 lattice, (k + 1/2) / n
 // and k / phi (the golden ratio) modulo 1, n the sampler's own count, shifted by options.rotation
@@ -105,7 +105,7 @@
 #include <ltc/core/polygon_area_sampling.hpp>
 #include <ltc/core/projected_solid_angle_sampling.hpp>
 #include <ltc/core/screen_order.hpp>
-#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/brdf/ggx.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>

@@ -1,4 +1,4 @@
-// ltc/shading/sphere_table.hpp -- the sphere form factor of ltc/shading/sphere_form_factor.hpp as a
+// ltc/shading/sphere_table.hpp -- the sphere form factor of ltc/core/sphere_form_factor.hpp as a
 // 32 x 32 table: the texture that a renderer's clipless shading reads (ltc/shading/clipless.hpp,
 // method::table; Hill and Heitz 2016).
 //
@@ -29,7 +29,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/shading/sphere_form_factor.hpp>
+#include <ltc/core/sphere_form_factor.hpp>
 
 #include <glm/glm.hpp>
 

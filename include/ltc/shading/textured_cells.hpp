@@ -40,7 +40,7 @@
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/shading/cell_pyramid.hpp>
-#include <ltc/detail/cell_quadtree.hpp>
+#include <ltc/shading/detail/cell_quadtree.hpp>
 
 #include <glm/glm.hpp>
 

@@ -9,7 +9,7 @@
 // u = sqrt(1 - cos theta_v) = t / 63 (cos theta_v clamped to at least 0.000796327) and a along roughness = a / 63.
 // Channels: m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] (GLM m[column][row]) of the inverse
 // LTC matrix divided by m_inv[1][1]; magnitude = integral of rho cos; fresnel = integral of
-// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/shading/table.hpp) or ltc::ggx::fetch.
+// rho cos (1 - V.H)^5. Look it up with ltc::ltc_table (ltc/tables/ltc_table.hpp) or ltc::ggx::fetch.
 // Fit (ltc/fitting/fit.hpp): M = R [m11 0 m13; 0 m22 0; m31 0 1], R the rotation to the average direction,
 // minimizing the L3 error integral |rho cos - magnitude D|^3 (MIS over 32 x 32 BRDF and LTC samples,
 // 2 rounds, Nelder-Mead tolerance 1e-05); moments over 64 x 64 samples.

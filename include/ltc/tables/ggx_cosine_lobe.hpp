@@ -10,7 +10,7 @@
 // fit_two_lobes.hpp, model ltc_and_cosine:
 // the integral objective of the mixture plus its squared relative L3 distance, MIS over 32 x 32
 // BRDF and per-lobe samples, 2 rounds, Nelder-Mead tolerance 1e-05). The data are two tables of the layout of
-// ltc/shading/table.hpp, lobe 1's then lobe 2's (32 x 32 nodes, 6 floats each: data[l * 32 * 32 * 6 + ((a * 32) + t) * 6 + channel]),
+// ltc/tables/ltc_table.hpp, lobe 1's then lobe 2's (32 x 32 nodes, 6 floats each: data[l * 32 * 32 * 6 + ((a * 32) + t) * 6 + channel]),
 // node t along u = sqrt(1 - cos theta_v) = t / 31 (cos theta_v clamped to at least 0.000796327) and a along roughness = a / 31;
 // channels m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2] of M_l^-1 / M_l^-1[1][1], then the magnitude
 // times the lobe's share (1 - s, s), and the Fresnel term times the lobe's share of it (1 - s_F, s_F: fitted

@@ -1,4 +1,4 @@
-// ltc/detail/texture_filter.hpp -- the one-dimensional pieces of the prefilter of textured
+// ltc/shading/detail/texture_filter.hpp -- the one-dimensional pieces of the prefilter of textured
 // lights (paper section 5.3; the filter (*) and its levels are described in
 // ltc/shading/light_texture.hpp): the sample grid of one axis of a level, the normalized
 // Gaussian taps of (*) along an axis, a loop split over threads, and the lerp that keeps a

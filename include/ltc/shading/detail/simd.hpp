@@ -1,4 +1,4 @@
-// ltc/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
+// ltc/shading/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
 // vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, bits, gather),
 // and the run-time choice between instruction sets.
 //
@@ -15,7 +15,7 @@
 // AVX2, whatever the flags of the translation unit. Each instruction set has a namespace below
 // (baseline: 16-byte vectors, SSE2 on x86-64; avx2: 32-byte vectors, AVX2 + FMA; avx512: 64-byte
 // vectors, AVX-512) whose functions
-// carry that instruction set's target attribute; the kernel (ltc/detail/batch_simd_kernel.inc)
+// carry that instruction set's target attribute; the kernel (ltc/shading/detail/batch_simd_kernel.inc)
 // is compiled once in each.
 //
 // LTC_SIMD is 1 where the layer is available (GCC or Clang, not CUDA device compilation, not
@@ -46,7 +46,7 @@
 #include <cstdint>
 
 // Functions of each instruction set's namespace: always inlined into the entry point compiled
-// for that instruction set (ltc/detail/batch_simd.hpp).
+// for that instruction set (ltc/shading/detail/batch_simd.hpp).
 #define LTC_SIMD_BASELINE_FN inline __attribute__((always_inline))
 #if LTC_SIMD_AVX2
 #define LTC_SIMD_AVX2_TARGET __attribute__((target("avx2,fma")))

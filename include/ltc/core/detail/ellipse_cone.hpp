@@ -1,4 +1,4 @@
-// ltc/detail/ellipse_cone.hpp -- the cone that an ellipse subtends at the origin, in the frame of
+// ltc/core/detail/ellipse_cone.hpp -- the cone that an ellipse subtends at the origin, in the frame of
 // its axis, and its horizon-clipped cosine integral in closed form (not part of the public API;
 // ltc/core/ellipse_integral.hpp states the results, this file the derivation).
 //

@@ -1,4 +1,4 @@
-// ltc/detail/batch_scalar.hpp -- the scalar path of the batch API (ltc/shading/batch.hpp): item i
+// ltc/shading/detail/batch_scalar.hpp -- the scalar path of the batch API (ltc/shading/batch.hpp): item i
 // through transformed<clamped_cosine<T, Policy>>::from_inverse(M_i^-1).integrate(P_i, n, s)
 // (eq. 11), for the items the SIMD kernel hands back (NaN), the tail shorter than a vector, and
 // the policies and builds without a SIMD kernel.

@@ -1,15 +1,15 @@
-// ltc/detail/lanes.hpp -- one polygon (or one edge) per SIMD lane: ltc/detail/lanes.inc (the lane
+// ltc/shading/detail/lanes.hpp -- one polygon (or one edge) per SIMD lane: ltc/shading/detail/lanes.inc (the lane
 // primitives, the edge terms of eq. (11), lane_polygon) compiled once per instruction set of
-// ltc/detail/simd.hpp, in ltc::detail::lanes::baseline and, on x86-64, ltc::detail::lanes::avx2 and
+// ltc/shading/detail/simd.hpp, in ltc::detail::lanes::baseline and, on x86-64, ltc::detail::lanes::avx2 and
 // ltc::detail::lanes::avx512.
-// Used by the batch kernels (ltc/detail/batch_simd.hpp) and the float quad path
-// (ltc/detail/quad_lanes.hpp).
+// Used by the batch kernels (ltc/shading/detail/batch_simd.hpp) and the float quad path
+// (ltc/core/detail/quad_lanes.hpp).
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/detail/simd.hpp>
+#include <ltc/shading/detail/simd.hpp>
 
 #include <cstddef>
 #include <limits>
@@ -23,7 +23,7 @@ namespace lanes {
 namespace baseline {
 using namespace ltc::simd::baseline;
 #define LTC_SIMD_FN LTC_SIMD_BASELINE_FN
-#include <ltc/detail/lanes.inc>
+#include <ltc/shading/detail/lanes.inc>
 #undef LTC_SIMD_FN
 }  // namespace baseline
 
@@ -31,7 +31,7 @@ using namespace ltc::simd::baseline;
 namespace avx2 {
 using namespace ltc::simd::avx2;
 #define LTC_SIMD_FN LTC_SIMD_AVX2_FN
-#include <ltc/detail/lanes.inc>
+#include <ltc/shading/detail/lanes.inc>
 #undef LTC_SIMD_FN
 }  // namespace avx2
 #endif
@@ -40,7 +40,7 @@ using namespace ltc::simd::avx2;
 namespace avx512 {
 using namespace ltc::simd::avx512;
 #define LTC_SIMD_FN LTC_SIMD_AVX512_FN
-#include <ltc/detail/lanes.inc>
+#include <ltc/shading/detail/lanes.inc>
 #undef LTC_SIMD_FN
 }  // namespace avx512
 #endif

@@ -1,4 +1,4 @@
-// ltc/detail/cell_quadtree.hpp -- the pieces of the quadtree of ltc/shading/textured_cells.hpp:
+// ltc/shading/detail/cell_quadtree.hpp -- the pieces of the quadtree of ltc/shading/textured_cells.hpp:
 // its leaves, the set of leaves still to refine, and the integrals of a group of cells.
 #pragma once
 

@@ -1,4 +1,4 @@
-// ltc/detail/projected_triangle.hpp -- sampling a spherical triangle in the upper hemisphere with
+// ltc/core/detail/projected_triangle.hpp -- sampling a spherical triangle in the upper hemisphere with
 // density proportional to the clamped cosine w.z (projected solid angle), exactly: the triangle
 // piece of ltc/core/projected_solid_angle_sampling.hpp, where the method is described.
 //

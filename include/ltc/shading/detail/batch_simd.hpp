@@ -1,5 +1,5 @@
-// ltc/detail/batch_simd.hpp -- the batch kernels (built on ltc/detail/lanes.hpp) compiled once
-// per instruction set of ltc/detail/simd.hpp, and their entry points: run_baseline, run_avx2 and
+// ltc/shading/detail/batch_simd.hpp -- the batch kernels (built on ltc/shading/detail/lanes.hpp) compiled once
+// per instruction set of ltc/shading/detail/simd.hpp, and their entry points: run_baseline, run_avx2 and
 // run_avx512 (compiled for AVX2 + FMA, or AVX-512, whatever the translation unit's flags; call
 // them only where ltc::simd::avx2::supported(), or ltc::simd::avx512::supported()).
 #pragma once
@@ -7,10 +7,10 @@
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/detail/math.hpp>
-#include <ltc/detail/lanes.hpp>
-#include <ltc/detail/simd.hpp>
+#include <ltc/shading/detail/lanes.hpp>
+#include <ltc/shading/detail/simd.hpp>
 #include <ltc/shading/batch_soa.hpp>
-#include <ltc/shading/table.hpp>
+#include <ltc/tables/ltc_table.hpp>
 
 #include <cstddef>
 #include <limits>
@@ -45,8 +45,8 @@ namespace baseline {
 using namespace ltc::simd::baseline;
 using namespace ltc::detail::lanes::baseline;
 #define LTC_SIMD_FN LTC_SIMD_BASELINE_FN
-#include <ltc/detail/batch_simd_kernel.inc>
-#include <ltc/detail/batch_simd_shading.inc>
+#include <ltc/shading/detail/batch_simd_kernel.inc>
+#include <ltc/shading/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN
 }  // namespace baseline
 
@@ -62,8 +62,8 @@ namespace avx2 {
 using namespace ltc::simd::avx2;
 using namespace ltc::detail::lanes::avx2;
 #define LTC_SIMD_FN LTC_SIMD_AVX2_FN
-#include <ltc/detail/batch_simd_kernel.inc>
-#include <ltc/detail/batch_simd_shading.inc>
+#include <ltc/shading/detail/batch_simd_kernel.inc>
+#include <ltc/shading/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN
 }  // namespace avx2
 
@@ -88,8 +88,8 @@ namespace avx512 {
 using namespace ltc::simd::avx512;
 using namespace ltc::detail::lanes::avx512;
 #define LTC_SIMD_FN LTC_SIMD_AVX512_FN
-#include <ltc/detail/batch_simd_kernel.inc>
-#include <ltc/detail/batch_simd_shading.inc>
+#include <ltc/shading/detail/batch_simd_kernel.inc>
+#include <ltc/shading/detail/batch_simd_shading.inc>
 #undef LTC_SIMD_FN
 }  // namespace avx512
 

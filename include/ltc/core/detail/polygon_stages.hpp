@@ -1,4 +1,4 @@
-// ltc/detail/polygon_stages.hpp -- the streaming stages of the shading_first clipping of
+// ltc/core/detail/polygon_stages.hpp -- the streaming stages of the shading_first clipping of
 // ltc/shading/polygon_light_integrals.hpp: vertices flow one at a time through Sutherland-Hodgman
 // clips to z >= 0, M^-1, a tee and sums of edge terms (paper eq. 11). Each stage holds only its
 // first and previous vertex, so a polygon of any n is clipped twice without a vertex buffer.

@@ -1,4 +1,4 @@
-// ltc/detail/vertices.hpp -- how the polygon machinery reads vertex i: from a pointer to glm
+// ltc/core/detail/vertices.hpp -- how the polygon machinery reads vertex i: from a pointer to glm
 // vectors, or from a callable (transformed<> applies M^-1 on the fly, without a vertex buffer),
 // as a unit vector (the general path) or as a raw direction of any scale (the quad path).
 #pragma once

@@ -1,7 +1,7 @@
-// ltc/detail/quad_lanes.hpp -- the float quad path on lanes: the quad's four edges in the four
+// ltc/core/detail/quad_lanes.hpp -- the float quad path on lanes: the quad's four edges in the four
 // lanes of one 16-byte vector (SSE2 on x86-64, NEON on AArch64), each adding its part above the
 // horizon, plus the horizon edge from the exit crossing to the entry crossing
-// (ltc/detail/lanes.inc says why that is the clipped polygon's edge sum). It replaces the switch
+// (ltc/shading/detail/lanes.inc says why that is the clipped polygon's edge sum). It replaces the switch
 // clipper and the five normalizations and edge terms of ltc/core/quad_path.hpp, which takes it for
 // float and the symmetric fits (minimax_rational, the float default, and polynomial) where
 // LTC_SIMD.
@@ -9,7 +9,7 @@
 
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
-#include <ltc/detail/lanes.hpp>
+#include <ltc/shading/detail/lanes.hpp>
 #include <ltc/detail/math.hpp>
 
 #include <glm/glm.hpp>
