@@ -1,23 +1,23 @@
-// ltc/ltc.hpp -- umbrella header: everything public in the ltc library.
+// ltc/ltc.hpp -- umbrella header of the runtime: everything a renderer shades with.
 //
 // Linearly Transformed Spherical Distributions and Linearly Transformed Cosines
 // (Heitz, Dupuy, Hill, Neubelt, "Real-Time Polygonal-Light Shading with Linearly Transformed
-// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. The folders are the layers:
+// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. The folders are the layers, lowest
+// first (a header includes only its own layer and those below: cmake/check_layers.cmake):
 //
+//   ltc/config.hpp, ltc/detail/   version, ABI namespace, scalar helpers;
 //   ltc/core/       the paper's mathematics: the original distributions, transformed<>, the
 //                   polygon machinery (horizon clipping, edge terms, form factors, solid angles),
-//                   the integrals over lines and ellipses (disks), and the samplers of polygons
-//                   (solid angle, projected solid angle, an LTC restricted to a polygon, area);
-//   ltc/shading/    what a renderer shades with: polygonal (also shadowed: the ratio estimator),
-//                   textured, disk, sphere and tube lights, the GGX tables' fetches (the
-//                   default's, an LTC and the cosine; the paper's single LTC; two LTCs), the
-//                   clipless approximation, structure-of-arrays batches;
-//   ltc/fitting/    offline: BRDF models and the fitter that makes the tables;
-//   ltc/reference/  Monte Carlo ground truth, to validate the approximations (and a renderer);
-//   ltc/tables/     generated data (the GGX tables); ltc/detail/: internals.
+//                   the integrals over lines and ellipses (disks), the samplers of polygons;
+//   ltc/brdf/       the BRDF models (GGX, Beckmann, Schlick's Fresnel);
+//   ltc/tables/     the table format (ltc_table) and the generated GGX tables;
+//   ltc/shading/    what a renderer shades with: polygonal (also shadowed), textured, disk,
+//                   sphere, line and tube lights, the tables' fetches, structure-of-arrays batches;
+//   ltc/reference/  Monte Carlo ground truth (umbrella: ltc/reference.hpp);
+//   ltc/fitting/    the offline fitter that makes the tables (umbrella: ltc/fitting.hpp).
 //
-// Including single headers instead keeps compile times down: ltc/shading/ggx_fetch.hpp (and what
-// includes it) parses the 64 x 64 table, ltc/fitting/ pulls in <thread>.
+// This umbrella is the runtime (core, brdf, tables, shading); the references and the fitter have
+// their own. Single headers parse less: each generated table is parsed only by its own fetch.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -28,6 +28,7 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/squared_clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
+#include <ltc/core/invalid_transform.hpp>
 #include <ltc/core/line_integral.hpp>
 #include <ltc/core/ellipse_integral.hpp>
 #include <ltc/core/spherical_triangle_sampling.hpp>
@@ -36,6 +37,11 @@
 #include <ltc/core/ltc_polygon_sampling.hpp>
 #include <ltc/core/polygon_area_sampling.hpp>
 #include <ltc/core/screen_order.hpp>
+
+#include <ltc/brdf/model.hpp>
+#include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/schlick.hpp>
 
 #include <ltc/tables/ltc_table.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
@@ -58,12 +64,3 @@
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
-
-#include <ltc/brdf/model.hpp>
-#include <ltc/brdf/ggx.hpp>
-#include <ltc/brdf/beckmann.hpp>
-#include <ltc/fitting/fit.hpp>
-
-#include <ltc/reference/ground_truth.hpp>
-#include <ltc/reference/textured_ground_truth.hpp>
-#include <ltc/reference/shape_ground_truth.hpp>

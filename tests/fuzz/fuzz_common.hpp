@@ -2,6 +2,7 @@
 // finite values.
 #pragma once
 
+#include <ltc/core/invalid_transform.hpp>
 #include <ltc/ltc.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>

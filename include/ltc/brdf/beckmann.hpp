@@ -40,7 +40,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace brdf {
 
 template <typename T>
@@ -156,4 +156,4 @@ struct beckmann {
 };
 
 }  // namespace brdf
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -42,7 +42,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace brdf {
 
 template <typename T>
@@ -157,4 +157,4 @@ struct ggx {
 };
 
 }  // namespace brdf
-}  // namespace ltc
+LTC_NAMESPACE_END

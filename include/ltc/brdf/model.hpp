@@ -22,7 +22,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace brdf {
 
 /// The view direction of the fit's local frame: V = (sin theta_v, 0, cos theta_v).
@@ -33,4 +33,4 @@ LTC_HOST_DEVICE inline glm::vec<3, T> view_from_cos(T cos_theta_v) {
 }
 
 }  // namespace brdf
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -12,9 +12,11 @@
 // Both sample and have the density of the underlying model: only eval is weighted.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <glm/glm.hpp>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace brdf {
 
 /// (1 - V.H)^5, H the half vector of V and L (0 where V + L vanishes).
@@ -59,4 +61,4 @@ struct with_schlick {
 };
 
 }  // namespace brdf
-}  // namespace ltc
+LTC_NAMESPACE_END

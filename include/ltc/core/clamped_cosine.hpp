@@ -10,7 +10,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Policy selects how integrate() evaluates the edge terms (ltc/core/edge_policy.hpp); the
 /// default, edge_policy::automatic, is minimax_rational in float and exact in double.
@@ -43,4 +43,4 @@ struct clamped_cosine {
     }
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Exact edge term of eq. (11) for unit vectors a, b: theta * (a x b) / |a x b|, theta the angle
 /// between them. With the default policy, computed as atan2(|a x b|, a.b) with a
@@ -35,4 +35,4 @@ LTC_HOST_DEVICE LTC_INLINE T edge_integral_z(const glm::vec<3, T>& a, const glm:
     return axb.z * Policy::theta_over_sin(c, axb);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

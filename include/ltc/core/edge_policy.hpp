@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -225,4 +225,4 @@ using resolve_t = typename resolve<Policy, T>::type;
 
 }  // namespace edge_policy
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -66,7 +66,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -249,4 +249,4 @@ inline T integrate_disk_polygon(const transformed<clamped_cosine<T, Policy>>& d,
     return apply_sidedness(e.det_sign * s, side);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -16,7 +16,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -71,4 +71,4 @@ LTC_HOST_DEVICE LTC_INLINE T form_factor(const glm::vec<3, T>* v, std::size_t n,
     return apply_sidedness(form_factor_signed<Policy>(v, n), s);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -12,7 +12,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Largest vertex count that clipping an n-gon to a half-space can produce: every run of
 /// vertices outside is replaced by two crossing points, and there are at most n/2 such runs.
@@ -152,4 +152,4 @@ LTC_HOST_DEVICE LTC_INLINE std::size_t clip_to_horizon(const glm::vec<3, T>* in,
     return m;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

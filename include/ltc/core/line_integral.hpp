@@ -66,7 +66,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -262,4 +262,4 @@ LTC_HOST_DEVICE inline T integrate_line(const transformed<clamped_cosine<T, Poli
     return detail::line_ltc_rescaled<P>(m_inv, p1, p2);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -25,7 +25,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// D restricted to a convex polygon, for D = transformed<clamped_cosine<T, Policy>> (file comment).
 template <typename T, std::size_t MaxVertices = 8>
@@ -115,4 +115,4 @@ class ltc_polygon_sampler {
     projected_polygon_sampler<T, MaxVertices> cosine_;
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

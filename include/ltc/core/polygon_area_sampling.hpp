@@ -21,7 +21,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Uniform sampling of a convex planar polygon by area (file comment).
 template <typename T, std::size_t MaxVertices = 8>
@@ -116,4 +116,4 @@ class polygon_area_sampler {
     std::size_t n_ = 0;
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -47,7 +47,7 @@
 #include <cstddef>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// A sampled direction and its density (per steradian).
 template <typename T>
@@ -255,4 +255,4 @@ class projected_polygon_sampler {
     bool wide_ = false;
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -17,7 +17,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -127,4 +127,4 @@ LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
 
 }  // namespace detail
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -23,7 +23,7 @@
 #include <cstdint>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -103,4 +103,4 @@ LTC_HOST_DEVICE LTC_INLINE glm::vec<2, T> screen_point(std::uint32_t x, std::uin
     return glm::vec<2, T>(detail::unit_fraction<T>(first), detail::unit_fraction<T>(second));
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// How a one-sided or two-sided emitter turns a signed integral into a non-negative one:
 /// one_sided = max(0, signed), two_sided = |signed| (the paper's shader code).
@@ -19,4 +19,4 @@ LTC_HOST_DEVICE LTC_INLINE T apply_sidedness(T signed_value, sidedness s) {
                                      : (signed_value > T(0) ? signed_value : T(0));
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

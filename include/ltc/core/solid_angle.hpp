@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Signed solid angle of the spherical triangle (q, a, b) of unit vectors, by Van Oosterom and
 /// Strackee (1983): tan(Omega / 2) = q.(a x b) / (1 + q.a + q.b + a.b). The triple product is
@@ -75,4 +75,4 @@ LTC_HOST_DEVICE LTC_INLINE T clipped_solid_angle(const glm::vec<3, T>* v, std::s
     return detail::clipped_solid_angle<T>(v, n);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

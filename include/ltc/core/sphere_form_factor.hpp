@@ -49,7 +49,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace clipless {
 
 namespace detail {
@@ -95,4 +95,4 @@ LTC_HOST_DEVICE inline T sphere_form_factor(T f, T cos_omega) {
 }
 
 }  // namespace clipless
-}  // namespace ltc
+LTC_NAMESPACE_END

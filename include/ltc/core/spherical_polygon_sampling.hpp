@@ -28,7 +28,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Uniform sampling in solid angle of a convex planar polygon of at most MaxVertices vertices,
 /// seen from the origin (file comment).
@@ -144,4 +144,4 @@ class spherical_polygon_sampler {
     std::size_t n_vertices_ = 0;
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

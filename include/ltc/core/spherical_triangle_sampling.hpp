@@ -32,7 +32,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -148,4 +148,4 @@ class spherical_triangle_sampler {
     T one_plus_ab_ = T(0), p_ = T(0), q_ = T(0);    // the constants of (1) and (2)
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

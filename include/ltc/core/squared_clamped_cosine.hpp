@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -74,4 +74,4 @@ struct squared_clamped_cosine {
     }
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -17,18 +17,23 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <sstream>
-#include <stdexcept>
-#include <string>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
-/// Thrown by the checked factories of transformed<> for a singular or non-finite matrix.
-class invalid_transform : public std::invalid_argument {
-  public:
-    using std::invalid_argument::invalid_argument;
+/// Thrown by the checked factories of transformed<> for a singular or non-finite matrix; a
+/// std::invalid_argument, defined in ltc/core/invalid_transform.hpp, which a caller of checked()
+/// or checked_from_inverse() includes (ltc/ltc.hpp does): <stdexcept> alone is larger to parse
+/// than the rest of this header, which the cheap factories never need.
+class invalid_transform;
+
+namespace detail {
+/// X, named through T so that its completeness is required only where a checked factory is used.
+template <typename X, typename T>
+struct defined_later {
+    using type = X;
 };
+}  // namespace detail
 
 namespace detail {
 
@@ -240,16 +245,18 @@ class transformed {
         abs_det_inv_ = std::abs(det_inv);
     }
 
+    // Failures go through invalid_transform::raise (ltc/core/invalid_transform.hpp), which formats
+    // the message: named through T, the class is needed only where these are instantiated.
+    using error = typename detail::defined_later<invalid_transform, T>::type;
+
     static mat3 rescaled(const mat3& m, const char* name) {
         T largest(0);
         for (int c = 0; c < 3; ++c)
             for (int r = 0; r < 3; ++r) {
-                if (!std::isfinite(m[c][r]))
-                    throw invalid_transform(std::string("ltc::transformed: ") + name +
-                                            " has a non-finite entry");
+                if (!std::isfinite(m[c][r])) error::raise(error::non_finite, name, 0.0, 0.0);
                 largest = glm::max(largest, std::abs(m[c][r]));
             }
-        if (!(largest > T(0))) throw invalid_transform(std::string("ltc::transformed: ") + name + " is zero");
+        if (!(largest > T(0))) error::raise(error::zero, name, 0.0, 0.0);
         return m / largest;
     }
 
@@ -259,12 +266,7 @@ class transformed {
         bool finite = std::isfinite(inv.determinant);
         for (int c = 0; c < 3; ++c) finite = finite && detail::is_finite(inv.inverse[c]);
         const T threshold = std::sqrt(std::numeric_limits<T>::epsilon());
-        if (!(ratio > threshold) || !finite) {
-            std::ostringstream msg;
-            msg << "ltc::transformed: " << name << " is singular or numerically singular (|det| / "
-                << "product of column norms = " << ratio << ", must exceed sqrt(epsilon) = " << threshold << ")";
-            throw invalid_transform(msg.str());
-        }
+        if (!(ratio > threshold) || !finite) error::raise(error::singular, name, double(ratio), double(threshold));
     }
 
     /// adj(M^-1) sign(|M^-1|) = M |det M^-1|: a positive multiple of M.
@@ -279,4 +281,4 @@ class transformed {
     T abs_det_inv_{1};
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -11,7 +11,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 template <typename T>
 struct uniform_hemisphere {
@@ -43,4 +43,4 @@ struct uniform_hemisphere {
     }
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

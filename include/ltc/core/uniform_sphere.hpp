@@ -11,7 +11,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 template <typename T>
 struct uniform_sphere {
@@ -42,4 +42,4 @@ struct uniform_sphere {
     }
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -13,7 +13,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// pi in the precision of T.
 template <typename T>
@@ -129,9 +129,9 @@ LTC_HOST_DEVICE inline T difference_of_products(T a, T b, T c, T d) {
 }
 
 }  // namespace detail
-}  // namespace ltc
+LTC_NAMESPACE_END
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace detail {
 
 /// (sin t cos phi, sin t sin phi, cos t): the supplement's spherical parameterization.
@@ -147,4 +147,4 @@ LTC_HOST_DEVICE inline T azimuth(T u) {
 }
 
 }  // namespace detail
-}  // namespace ltc
+LTC_NAMESPACE_END

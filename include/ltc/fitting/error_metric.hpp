@@ -25,6 +25,8 @@
 // tails); we keep it and report the result in both L1 and L3 (node_result, measure_error).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/brdf/model.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>
 #include <ltc/detail/math.hpp>
@@ -36,7 +38,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// A frozen set of sample directions with f(L) and the MIS weight 1 / (sum_k n_k p_k(L)):
@@ -157,4 +159,4 @@ node_error measure_error(double cos_theta, double alpha, const glm::dmat3& m_inv
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -12,6 +12,8 @@
 // also re-centres the L3 estimator's proposal, as the L3 fit does).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/fitting/error_metric.hpp>
 #include <ltc/fitting/integral_objective.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>
@@ -27,7 +29,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 struct integral_fit {
@@ -137,4 +139,4 @@ integral_fit fit_integrals(const glm::dvec3& V, double alpha, const moments& mom
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -12,6 +12,8 @@
 // rotationally symmetric and M = diag(m, m, 1) has one parameter.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/brdf/model.hpp>
 #include <ltc/fitting/error_metric.hpp>
 #include <ltc/fitting/fit_integrals.hpp>
@@ -28,7 +30,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 struct node_result {
@@ -177,4 +179,4 @@ node_result fit_node(double cos_theta, double alpha, const ltc_parameters& start
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -12,6 +12,8 @@
 // middle element m_inv[1][1] (= 1 / m22 > 0, so the distribution is unchanged).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/fitting/fit_node.hpp>
 #include <ltc/fitting/options.hpp>
 #include <ltc/tables/ltc_table.hpp>
@@ -28,7 +30,7 @@
 #include <thread>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// Called on the thread that runs fit_table(), about every options::progress_interval seconds
@@ -192,4 +194,4 @@ table fit_table(const options& opt, const progress_callback& progress = {}) {
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

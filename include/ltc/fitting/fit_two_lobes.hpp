@@ -49,6 +49,8 @@
 // D_l(N) > 0 measured while writing it were all worse on one grid or the other.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/brdf/model.hpp>
 #include <ltc/brdf/schlick.hpp>
 #include <ltc/fitting/error_metric.hpp>
@@ -76,7 +78,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// What the two lobes are: two free LTCs, or lobe 1 fixed at the clamped cosine about the normal
@@ -585,4 +587,4 @@ two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

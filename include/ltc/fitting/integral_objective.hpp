@@ -64,6 +64,8 @@
 // it; README, GGX section).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/brdf/schlick.hpp>
@@ -78,7 +80,7 @@
 #include <utility>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// One hexagon of the family: its vertices, its centre and tangent frame (gnomonic projection),
@@ -349,4 +351,4 @@ inline double integral_loss(const integral_targets& t, const glm::dmat3& m_inv, 
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

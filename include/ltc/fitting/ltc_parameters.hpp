@@ -11,6 +11,8 @@
 // elsewhere in the library do not move the bits of a generated table.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/detail/math.hpp>
 
 #include <glm/glm.hpp>
@@ -18,7 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// v / |v|, or 0 for v = 0 (local, so that the fit depends on no other header's rounding).
@@ -96,4 +98,4 @@ inline double ltc_density(const glm::dmat3& m_inv, double abs_det_inv, const glm
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

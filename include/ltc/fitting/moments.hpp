@@ -10,13 +10,15 @@
 //   average direction = integral of f(L) L dL, y set to 0, normalized.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/fitting/ltc_parameters.hpp>  // normalize_or_zero
 
 #include <glm/glm.hpp>
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 struct moments {
@@ -59,4 +61,4 @@ moments compute_moments(const glm::dvec3& V, double alpha, int n) {
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -6,13 +6,15 @@
 // same minimum bit for bit. ltc/fitting/fit_node.hpp runs it on the LTC parameters.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <utility>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 template <std::size_t Dim>
@@ -111,4 +113,4 @@ nelder_mead_result<Dim> nelder_mead(F&& f, const std::array<double, Dim>& start,
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

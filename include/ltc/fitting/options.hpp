@@ -5,9 +5,11 @@
 // and roughness r = a / (N - 1), alpha = max(r^2, alpha_min) (see ltc/tables/ltc_table.hpp).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <algorithm>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// What each node minimizes: the paper's L3 distance between the lobes (l3, the default: the
@@ -48,4 +50,4 @@ inline double node_alpha(int a, int n, double alpha_min) {
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

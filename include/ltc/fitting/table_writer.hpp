@@ -12,6 +12,7 @@
 // writes the shipped table with it, and CI checks that it regenerates byte for byte.
 #pragma once
 
+#include <ltc/config.hpp>
 #include <ltc/fitting/fit_table.hpp>
 #include <ltc/fitting/fit_two_lobes.hpp>
 #include <ltc/fitting/options.hpp>
@@ -24,7 +25,7 @@
 #include <string>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// The fit's own estimate of its error over a table (node_result::relative_l1, relative_l3).
@@ -192,4 +193,4 @@ inline std::string two_lobe_table_header_text(const std::string& brdf, const std
 }
 
 }  // namespace fit
-}  // namespace ltc
+LTC_NAMESPACE_END

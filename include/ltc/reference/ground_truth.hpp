@@ -44,6 +44,8 @@
 // 5e-5 sr triangle of the tests), which the standard error does not include.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/detail/math.hpp>
 #include <ltc/core/polygon.hpp>
 #include <ltc/reference/spherical_polygon.hpp>   // spherical_polygon
@@ -58,7 +60,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ground_truth {
 
 /// How the two techniques are weighted: balance (p_k / sum p) or power (p_k^2 / sum p^2).
@@ -155,4 +157,4 @@ estimate integrate(const Model& model, const glm::dvec3& V, double alpha, const 
 }
 
 }  // namespace ground_truth
-}  // namespace ltc
+LTC_NAMESPACE_END

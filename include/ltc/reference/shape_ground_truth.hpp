@@ -52,6 +52,8 @@
 // it, as in ltc/core/line_integral.hpp). A shading point exactly on a tube's surface is unsupported.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/detail/math.hpp>
 #include <ltc/reference/ground_truth.hpp>  // options, estimate, heuristic, techniques
 #include <ltc/reference/splitmix64.hpp>    // splitmix64
@@ -63,7 +65,7 @@
 #include <cstdint>
 #include <initializer_list>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ground_truth {
 namespace shape_detail {
 
@@ -295,4 +297,4 @@ estimate integrate_line(const Model& model, const glm::dvec3& V, double alpha, g
 }
 
 }  // namespace ground_truth
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -17,6 +17,8 @@
 // convex polygon this is exactly uniform: density 1 / Omega inside.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/solid_angle.hpp>  // triangle_solid_angle
 #include <ltc/detail/math.hpp>
 #include <ltc/reference/spherical_triangle.hpp>
@@ -28,7 +30,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ground_truth {
 
 /// A spherical polygon seen from the origin, triangulated as a fan from vertex 0: uniform
@@ -136,4 +138,4 @@ class spherical_polygon {
 };
 
 }  // namespace ground_truth
-}  // namespace ltc
+LTC_NAMESPACE_END

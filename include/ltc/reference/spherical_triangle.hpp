@@ -7,11 +7,13 @@
 //   glm::dvec3 w = s.sample(u);                                 // density 1 / s.solid_angle()
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/spherical_triangle_sampling.hpp>
 
 #include <glm/glm.hpp>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ground_truth {
 
 /// Uniform sampling of the spherical triangle (a, b, c) of unit vectors by Arvo's method: the
@@ -27,4 +29,4 @@ inline glm::dvec3 sample_spherical_triangle(const glm::dvec3& a, const glm::dvec
 }
 
 }  // namespace ground_truth
-}  // namespace ltc
+LTC_NAMESPACE_END

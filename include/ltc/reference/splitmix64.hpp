@@ -8,11 +8,13 @@
 // bits, no <random> distribution, components drawn in a sequenced order.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ground_truth {
 
 /// SplitMix64 (Steele, Lea and Flood 2014): a small, fast, statistically sound generator whose
@@ -48,4 +50,4 @@ class splitmix64 {
 };
 
 }  // namespace ground_truth
-}  // namespace ltc
+LTC_NAMESPACE_END

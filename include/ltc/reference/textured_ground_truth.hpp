@@ -27,6 +27,8 @@
 // Deterministic for a fixed seed (SplitMix64, doubles from the top 53 bits).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
 
@@ -38,7 +40,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace textured_ground_truth {
 
 struct options {
@@ -208,4 +210,4 @@ inline estimate integrate(const Lobe& lobe, const glm::dvec3 quad[4], const Radi
 }
 
 }  // namespace textured_ground_truth
-}  // namespace ltc
+LTC_NAMESPACE_END

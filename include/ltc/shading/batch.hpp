@@ -47,7 +47,7 @@
 #include <cstddef>
 #include <iterator>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 
 /// The instruction set a batch runs with (see the file comment).
@@ -162,4 +162,4 @@ void integrate_ngons_blocked(const ngon_soa<T>& in, T* out, std::size_t count, s
 }
 
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

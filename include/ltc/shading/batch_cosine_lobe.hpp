@@ -14,6 +14,8 @@
 // tail, get ltc::shade_polygon_light_cosine_lobe itself (tests/test_batch_shading.cpp).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/shading/batch_lobes.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
 #include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
@@ -22,7 +24,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 
 /// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
@@ -57,4 +59,4 @@ void shade_quad_lights_cosine_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>
 }
 
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

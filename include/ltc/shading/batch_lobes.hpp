@@ -26,7 +26,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 
 namespace detail {
@@ -192,4 +192,4 @@ void shade_quad_lights_lobes(const glm::vec<3, T>& P, const shading_frame<T>& fr
 }  // namespace detail
 
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -19,6 +19,8 @@
 // of ltc/shading/batch.hpp; out receives each light's own contribution.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/shading/batch.hpp>
@@ -32,7 +34,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 
 /// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
@@ -77,4 +79,4 @@ void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const g
 }
 
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

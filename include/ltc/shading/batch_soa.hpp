@@ -4,11 +4,13 @@
 // shared by all items), and many shading points for ltc/shading/batch_shading.hpp.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 
 /// Where each item's inverse matrix M^-1 comes from: nine arrays (one per entry, indexed like
@@ -93,4 +95,4 @@ struct shading_results {
 };
 
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

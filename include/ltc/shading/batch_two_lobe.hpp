@@ -14,6 +14,8 @@
 // lights, as batch::shade_quad_lights_one_lobe, with one more LTC integral per light for lobe 2.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/shading/batch_lobes.hpp>
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
@@ -22,7 +24,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 
 /// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
@@ -57,4 +59,4 @@ void shade_quad_lights_two_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>& N
 }
 
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -22,6 +22,8 @@
 // counts in double, kept for the level below only).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -30,7 +32,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 template <typename T>
 class cell_pyramid {
@@ -138,4 +140,4 @@ class cell_pyramid {
     std::vector<level> levels_;
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -58,7 +58,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace clipless {
 
 /// How the horizon-clipped sphere form factor is evaluated.
@@ -127,4 +127,4 @@ inline T integrate(const transformed<clamped_cosine<T, Policy>>& d, const glm::v
 }
 
 }  // namespace clipless
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -21,6 +21,8 @@
 // the horizon's) and the clipless approximation with the sphere modes.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
 #include <ltc/shading/polygon_light_radiance.hpp>
 
@@ -29,7 +31,7 @@
 #include <array>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Shading with explicit coefficients (lobes[0] the cosine's magnitude and Fresnel term, its
 /// m_inv unused; lobes[1] the LTC, m_inv in the local frame of `frame`; each magnitude and
@@ -60,4 +62,4 @@ inline polygon_light_result<T> shade_polygon_light_cosine_lobe(const glm::vec<3,
                                                    albedo, radiance, vertices, n, side, clip);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

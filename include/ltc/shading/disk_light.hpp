@@ -20,17 +20,21 @@
 // (edge-on) give 0; see ltc/core/ellipse_integral.hpp.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/ellipse_integral.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
+#include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// The disk light (file comment) with explicit LTC coefficients in the local frame of `frame`.
 template <typename T>
@@ -62,4 +66,4 @@ inline polygon_light_result<T> shade_disk_light(const glm::vec<3, T>& P, const g
                             normal, radius, side);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

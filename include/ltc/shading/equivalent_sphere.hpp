@@ -25,7 +25,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace clipless {
 
 /// The sphere that stands in for a polygon: f = sin^2(sigma) = |F| and cos(omega) = u.z with u
@@ -83,4 +83,4 @@ LTC_HOST_DEVICE inline equivalent_sphere<T> sphere_of_polygon(const glm::vec<3, 
 }
 
 }  // namespace clipless
-}  // namespace ltc
+LTC_NAMESPACE_END

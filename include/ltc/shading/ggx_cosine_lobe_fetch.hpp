@@ -25,13 +25,15 @@
 // README, "Shading polygonal lights with GGX".
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/tables/ltc_table.hpp>
 #include <ltc/tables/ggx_cosine_lobe.hpp>
 
 #include <array>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ggx_cosine_lobe {
 
 inline constexpr int size = tables::ggx_cosine_lobe_size;
@@ -68,4 +70,4 @@ inline std::array<ltc_coefficients<T>, 2> fetch(T cos_theta_v, T roughness) {
 }
 
 }  // namespace ggx_cosine_lobe
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -19,10 +19,12 @@
 // for the fit.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/tables/ltc_table.hpp>
 #include <ltc/tables/ggx.hpp>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ggx {
 
 /// The shipped GGX table as an ltc_table view (e.g. to upload it as a texture: table.data()).
@@ -37,4 +39,4 @@ inline ltc_coefficients<T> fetch(T cos_theta_v, T roughness) {
 }
 
 }  // namespace ggx
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -19,13 +19,15 @@
 // ground truth and cost against the one-lobe table: README, "Shading polygonal lights with GGX".
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/tables/ltc_table.hpp>
 #include <ltc/tables/ggx_two_lobe.hpp>
 
 #include <array>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace ggx_two_lobe {
 
 inline constexpr int size = tables::ggx_two_lobe_size;
@@ -47,4 +49,4 @@ inline std::array<ltc_coefficients<T>, 2> fetch(T cos_theta_v, T roughness) {
 }
 
 }  // namespace ggx_two_lobe
-}  // namespace ltc
+LTC_NAMESPACE_END

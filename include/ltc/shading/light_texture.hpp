@@ -85,7 +85,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Bilinear lookup of an unfiltered width x height row-major RGB image at uv (texel centres at
 /// ((x + 0.5) / width, (y + 0.5) / height), clamp-to-edge): the radiance L(uv) of a textured
@@ -287,4 +287,4 @@ class light_texture {
     std::vector<level> levels_;
 };
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -18,18 +18,22 @@
 // radius <= 0, p0 = p1, N = 0, an axis through the shading point give 0.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/line_integral.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
+#include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>
 
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// The tube light (file comment) with explicit LTC coefficients in the local frame of `frame`.
 template <typename T>
@@ -65,4 +69,4 @@ inline polygon_light_result<T> shade_line_light(const glm::vec<3, T>& P, const g
                             radius);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -45,6 +45,8 @@
 // specular except for ltc_space's leak (ltc/shading/polygon_light_integrals.hpp).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/shading/polygon_light_radiance.hpp>      // polygon_light_result, shade_polygon_light(frame, lobe, ...)
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>   // shade_polygon_light_cosine_lobe: the default
 #include <ltc/shading/polygon_light_integrals.hpp>     // horizon_clipping, integrate_polygon_light
@@ -58,7 +60,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Shading with the library's one-lobe GGX table (the default before issue 16): cos theta_v from
 /// N and V, the coefficients from ltc::ggx::fetch(cos theta_v, roughness) (alpha = roughness^2).
@@ -89,4 +91,4 @@ inline polygon_light_result<T> shade_polygon_light(const glm::vec<3, T>& P, cons
     return shade_polygon_light_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance, vertices, n, side, clip);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -70,7 +70,7 @@
 #include <cstddef>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Where the polygon is clipped to the horizon (file comment).
 enum class horizon_clipping { ltc_space, shading_first, sphere_analytic, sphere_table };
@@ -213,4 +213,4 @@ LTC_HOST_DEVICE inline T integrate_polygon_light_ltc(const shading_frame<T>& fra
     return glm::determinant(m_inv) < T(0) ? -s : s;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -21,7 +21,7 @@
 
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// Specular and diffuse radiance reflected towards V (RGB, or any 3 channels).
 template <typename T>
@@ -54,4 +54,4 @@ LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
                                   albedo, radiance, side);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

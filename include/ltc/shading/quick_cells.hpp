@@ -30,6 +30,8 @@
 // a non-finite corner gives I_D of the quad times the texture's mean; 0 below the horizon).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
@@ -44,7 +46,7 @@
 #include <algorithm>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// The quick_cells integral of D times the texture over the quad (file comment). Two-sided by
 /// default, like transformed::integrate.
@@ -148,4 +150,4 @@ inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>
     return r;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -23,7 +23,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// The local shading frame (T1, T2, N) and cos theta_v of a shading point (file comment).
 template <typename T>
@@ -72,4 +72,4 @@ LTC_HOST_DEVICE inline shading_frame<T> make_shading_frame(const glm::vec<3, T>&
     return f;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

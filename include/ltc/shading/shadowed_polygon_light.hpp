@@ -119,7 +119,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 enum class shadow_sampler { ltc_polygon, light_area };
 /// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
@@ -499,4 +499,4 @@ shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     return r;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -20,9 +20,13 @@
 // points close to the sphere).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
+#include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>
@@ -31,7 +35,7 @@
 #include <cmath>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// What a sphere (centre, radius) is from P (file comment): `disk`, the disk that covers the
 /// same directions; `inside` (d <= R: every direction); or `nothing` (radius <= 0 or NaN,
@@ -94,4 +98,4 @@ inline polygon_light_result<T> shade_sphere_light(const glm::vec<3, T>& P, const
                               radius);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

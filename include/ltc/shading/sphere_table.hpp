@@ -36,7 +36,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace clipless {
 
 namespace detail {
@@ -128,4 +128,4 @@ inline T sphere_form_factor_table(T f, T cos_omega) {
 }
 
 }  // namespace clipless
-}  // namespace ltc
+LTC_NAMESPACE_END

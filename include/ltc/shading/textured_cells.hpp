@@ -36,6 +36,8 @@
 // the texture's mean, as the fetch does there.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
@@ -49,7 +51,7 @@
 #include <limits>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// How far integrate_textured_cells refines (file comment).
 struct cell_budget {
@@ -217,4 +219,4 @@ inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine
                                          [&](int k, int i, int j) { return cells.mean(k, i, j); });
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

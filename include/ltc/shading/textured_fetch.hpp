@@ -3,13 +3,15 @@
 // ltc/shading/textured_light.hpp derives them and lists their robustness.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// The parameters of the prefiltered fetch (file comment).
 template <typename T>
@@ -56,4 +58,4 @@ inline textured_fetch<T> fetch_parameters(const glm::mat<3, 3, T>& m_inv, const 
     return out;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

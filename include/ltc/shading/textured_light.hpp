@@ -83,6 +83,8 @@
 // (mean 3.5-11% by roughness, up to 88% at roughness 0.1 and grazing view in this grid).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/light_texture.hpp>
@@ -90,7 +92,9 @@
 #include <ltc/shading/textured_cells.hpp>
 #include <ltc/shading/textured_fetch.hpp>
 #include <ltc/core/polygon.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
+#include <ltc/shading/shading_frame.hpp>
 #include <ltc/core/transformed.hpp>
 
 #include <glm/glm.hpp>
@@ -98,7 +102,7 @@
 #include <cmath>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// I_D I_L (eq. 12-14) for the LTC d and the textured quad (file comment): the RGB
 /// approximation of int_quad L(w) D(w) dw. Two-sided by default (like transformed::integrate);
@@ -181,4 +185,4 @@ inline textured_light_result<T> shade_textured_quad_light(const glm::vec<3, T>& 
     return r;
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -51,12 +51,16 @@
 // matter) when a coordinate or the radius exceeds 1/16 of the largest finite value.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/ellipse_integral.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
+#include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>
@@ -65,7 +69,7 @@
 #include <cmath>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// What a tube (axis p0-p1, radius) is from P (file comment): `ribbon`, the quad corner[0..4)
 /// covering the same directions (but for the ends); `inside` (P within `radius` of the axis);
@@ -172,4 +176,4 @@ inline polygon_light_result<T> shade_tube_light(const glm::vec<3, T>& P, const g
                             radius);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

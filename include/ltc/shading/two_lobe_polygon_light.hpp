@@ -13,6 +13,8 @@
 // measured by benchmarks/bench_shading.cpp.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
 
@@ -21,7 +23,7 @@
 #include <array>
 #include <cstddef>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// The second lobe's specular term (its magnitude and Fresnel carrying its share), which
 /// shade_polygon_light_two_lobe adds to the first lobe's shading: its LTC integral alone.
@@ -59,4 +61,4 @@ inline polygon_light_result<T> shade_polygon_light_two_lobe(const glm::vec<3, T>
                                                 radiance, vertices, n, side, clip);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -37,7 +37,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace detail {
 
 /// An ellipse in its principal frame, as seen from the origin (file comment, step 1).
@@ -51,11 +51,14 @@ struct ellipse_frame {
 
 /// a x b with every product exact (one rounding per component): the plane's normal of a thin
 /// ellipse given by nearly parallel conjugate semi-axes is otherwise off by epsilon |a| |b| /
-/// |a x b|, which tilts it about its minor axis. Products in double for float; for double by FMA
-/// when the target has it, else by Dekker's splitting (std::fma would be a slow library call).
+/// |a x b|, which tilts it about its minor axis. Products in double for float; for double by
+/// Dekker's splitting on the host in every build (not std::fma: a library call without -mfma, and
+/// a body that changed with -m flags would break the one definition rule), by FMA on the device.
+/// Both give the exact error of the product wherever the splitting does not overflow
+/// (|x|, |y| below about 2^996).
 template <typename T>
 LTC_HOST_DEVICE inline T exact_product_error(T x, T y, T p) {
-#if defined(__FMA__) || defined(__CUDA_ARCH__)
+#if defined(__CUDA_ARCH__)
     return std::fma(x, y, -p);
 #else
     const T split = T((1ull << ((std::numeric_limits<T>::digits + 1) / 2)) + 1);
@@ -294,4 +297,4 @@ LTC_HOST_DEVICE inline bool needs_wider_type(const ellipse_frame<T>& f) {
 }
 
 }  // namespace detail
-}  // namespace ltc
+LTC_NAMESPACE_END

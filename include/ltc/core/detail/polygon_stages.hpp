@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -88,4 +88,4 @@ struct tee_stage {
 
 }  // namespace detail
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -22,7 +22,7 @@
 
 #include <cmath>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace detail {
 
 /// x - sin x for x >= 0, given sin x, without cancellation: its Taylor series below 1/2, the
@@ -266,4 +266,4 @@ struct projected_triangle {
 };
 
 }  // namespace detail
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -17,7 +17,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace detail {
 
 /// Whether quad_form_factor runs on lanes for T and Policy.
@@ -93,4 +93,4 @@ LTC_INLINE bool quad_form_factor_lanes(const Vertices& v, const glm::vec3 (&q)[4
 #endif
 
 }  // namespace detail
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -61,4 +61,4 @@ LTC_HOST_DEVICE LTC_INLINE glm::vec<3, T> raw_vertex(const Vertices& v, std::siz
 
 }  // namespace detail
 
-}  // namespace ltc
+LTC_NAMESPACE_END

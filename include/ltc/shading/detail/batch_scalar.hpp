@@ -4,6 +4,8 @@
 // the policies and builds without a SIMD kernel.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
@@ -15,7 +17,7 @@
 #include <cstddef>
 #include <memory>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 namespace detail {
 
@@ -44,4 +46,4 @@ inline void scalar_items(const matrices<T>& mats, const T* const* x, const T* co
 
 }  // namespace detail
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

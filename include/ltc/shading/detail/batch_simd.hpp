@@ -16,7 +16,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace batch {
 namespace detail {
 
@@ -121,4 +121,4 @@ std::size_t run_shade_baseline(const ltc_table* const* tables, const shading_lig
 
 }  // namespace detail
 }  // namespace batch
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -2,6 +2,8 @@
 // its leaves, the set of leaves still to refine, and the integrals of a group of cells.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/core/transformed.hpp>
@@ -16,7 +18,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace detail {
 
 /// A leaf of the quadtree: cell (i, j) of level k, its I_D and its bound range I_D.
@@ -169,4 +171,4 @@ class open_leaves {
 
 }  // namespace detail
 
-}  // namespace ltc
+LTC_NAMESPACE_END

@@ -16,7 +16,7 @@
 #include <type_traits>
 
 #if LTC_SIMD
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace detail {
 namespace lanes {
 
@@ -47,5 +47,5 @@ using namespace ltc::simd::avx512;
 
 }  // namespace lanes
 }  // namespace detail
-}  // namespace ltc
+LTC_NAMESPACE_END
 #endif  // LTC_SIMD

@@ -24,6 +24,8 @@
 // are compiled (x86-64).
 #pragma once
 
+#include <ltc/config.hpp>
+
 #if !defined(LTC_NO_SIMD) && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
 #define LTC_SIMD 1
 #else
@@ -59,7 +61,7 @@
     inline __attribute__((always_inline, target("avx2,fma,avx512f,avx512cd,avx512bw,avx512dq,avx512vl")))
 #endif
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 namespace simd {
 
 /// The vector of W lanes of T, and the integer vector of the same lanes that comparisons return
@@ -204,17 +206,14 @@ LTC_SIMD_AVX2_FN V gather(const float* base, VI index) {
         return (V)_mm256_cvtps_pd(_mm256_i64gather_ps(base, (__m256i)index, 4));
 }
 
-/// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once.
+/// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once at run time in every build
+/// (never from -m flags: the body must be the same in every translation unit).
 inline bool supported() {
-#if defined(__AVX2__) && defined(__FMA__)
-    return true;
-#else
     static const bool yes = [] {
         __builtin_cpu_init();
         return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     }();
     return yes;
-#endif
 }
 
 }  // namespace avx2
@@ -278,10 +277,6 @@ LTC_SIMD_AVX512_FN V gather(const float* base, VI index) {
 /// Whether this CPU (and its operating system, which must save the 512-bit registers: the
 /// compiler's check includes it) runs the AVX-512 kernel, checked once.
 inline bool supported() {
-#if defined(__AVX512F__) && defined(__AVX512CD__) && defined(__AVX512BW__) && defined(__AVX512DQ__) && \
-    defined(__AVX512VL__) && defined(__FMA__)
-    return true;
-#else
     static const bool yes = [] {
         __builtin_cpu_init();
         return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
@@ -289,13 +284,12 @@ inline bool supported() {
                __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     }();
     return yes;
-#endif
 }
 
 }  // namespace avx512
 #endif
 
 }  // namespace simd
-}  // namespace ltc
+LTC_NAMESPACE_END
 
 #endif  // LTC_SIMD

@@ -5,6 +5,8 @@
 // constant texture constant.
 #pragma once
 
+#include <ltc/config.hpp>
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -13,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 namespace detail {
 
@@ -88,4 +90,4 @@ inline glm::vec3 lerp_exact(const glm::vec3& a, const glm::vec3& b, float t) { r
 
 }  // namespace detail
 
-}  // namespace ltc
+LTC_NAMESPACE_END
