@@ -44,7 +44,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace ltc {
+LTC_NAMESPACE_BEGIN
 
 /// What a table lookup returns: the inverse LTC matrix (any positive scale; here m_inv[1][1] = 1),
 /// the magnitude (directional albedo) and the Fresnel term. magnitude * (the LTC's integral over a
@@ -230,4 +230,4 @@ inline constexpr ltc_table two_lobe_layout_table(const float* data, int size, in
     return ltc_table(data + (l == 0 ? 0 : std::size_t(size) * std::size_t(size) * channel::count), size, size);
 }
 
-}  // namespace ltc
+LTC_NAMESPACE_END
