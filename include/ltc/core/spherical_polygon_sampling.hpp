@@ -66,7 +66,7 @@ class spherical_polygon_sampler {
         for (std::size_t i = 0; i < n; ++i) {
             const vec3& a = v_[i];
             const vec3& b = v_[i + 1 < n ? i + 1 : 0];
-            n_[i] = s * detail::stable_cross(a, b, glm::dot(a, b));
+            n_[i] = detail::safe_normalize(s * detail::stable_cross(a, b, glm::dot(a, b)));
         }
         n_vertices_ = n;
         orientation_ = s;
@@ -102,11 +102,15 @@ class spherical_polygon_sampler {
     }
 
     /// 1 / solid_angle() for unit w on the inner side of the great circles of all edges (the
-    /// polygon is convex), 0 elsewhere and when empty().
+    /// polygon is convex), 0 elsewhere and when empty(). Every sample has pdf > 0: w counts as
+    /// inside an edge (a, b) also when outside its great circle by at most
+    /// detail::sample_margin<T>() (the rounding of sample() and of this test) and on the side of
+    /// the arc a b, w.(a + b) > 0 (without that, the antipodes of a polygon narrower than the
+    /// margin would be inside too).
     LTC_HOST_DEVICE T pdf(const vec3& w) const {
         if (empty()) return T(0);
         for (std::size_t i = 0; i < n_vertices_; ++i)
-            if (glm::dot(w, n_[i]) < T(0)) return T(0);
+            if (!detail::inside_edge(w, n_[i], v_[i], v_[i + 1 < n_vertices_ ? i + 1 : 0])) return T(0);
         return T(1) / total_;
     }
 
@@ -137,7 +141,7 @@ class spherical_polygon_sampler {
     }
 
     vec3 v_[MaxVertices]{};                                 // unit vertices
-    vec3 n_[MaxVertices]{};                                 // inward normals of the edges' great circles
+    vec3 n_[MaxVertices]{};                                 // inward unit normals of the edges' great circles
     spherical_triangle_sampler<T> tri_[MaxVertices - 2]{};  // (v_k, v_0, v_k+1), empty if not sampled
     T cdf_[MaxVertices - 2]{};                              // running sums of their solid angles
     T total_ = T(0), orientation_ = T(0);                   // solid angle; sign of the signed one
