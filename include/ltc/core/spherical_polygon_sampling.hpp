@@ -89,13 +89,17 @@ class spherical_polygon_sampler {
         for (std::size_t i = 0; i < n; ++i) {
             const vec3& a = v_[i];
             const vec3& b = v_[i + 1 < n ? i + 1 : 0];
-            n_[i] = detail::safe_normalize(s * detail::stable_cross(a, b, glm::dot(a, b)));
+            n_[i] = s * detail::stable_cross(a, b, glm::dot(a, b));
         }
         n_vertices_ = n;
         orientation_ = s;
         total_ = acc;
         if constexpr (widens) {
-            if (detail::epsilon<T>() * fan_perimeter() > T(1.0 / 4096) * total_) widen(vertices);
+            // epsilon P > 2^-12 Omega, with P^2 <= k sum d^2 (fan_chords), squared: no square root.
+            // fan_chords() <= 4 k^2 (chords <= 2): polygons above that bound skip it.
+            const T e = detail::epsilon<T>(), omega = T(1.0 / 4096) * total_;
+            const T k = T(3 * n_vertices_ - 6);
+            if (T(4) * k * k * e * e > omega * omega && e * e * fan_chords() > omega * omega) widen(vertices);
         }
     }
 
@@ -111,8 +115,7 @@ class spherical_polygon_sampler {
     LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
         if (empty()) return v_[0] == vec3(T(0)) || !detail::is_finite(v_[0]) ? vec3(T(0), T(0), T(1)) : v_[0];
         if constexpr (widens) {
-            // A unit vector in Wide rounded to T: unit within u, within u of the wide sample.
-            if (widened_) return vec3(wide_.sample(glm::vec<2, Wide>(u)));
+            if (widened_) return sample_wide(u);
         }
         const T target = u.x * total_;
         // The first triangle whose cdf step passes target (empty triangles have flat steps); the
@@ -141,8 +144,10 @@ class spherical_polygon_sampler {
     /// margin would be inside too).
     LTC_HOST_DEVICE T pdf(const vec3& w) const {
         if (empty()) return T(0);
-        for (std::size_t i = 0; i < n_vertices_; ++i)
-            if (!detail::inside_edge(w, n_[i], v_[i], v_[i + 1 < n_vertices_ ? i + 1 : 0])) return T(0);
+        for (std::size_t i = 0; i < n_vertices_; ++i) {
+            const T d = glm::dot(w, n_[i]);
+            if (d < T(0)) return pdf_near_boundary(w, d, i);
+        }
         return T(1) / total_;
     }
 
@@ -151,7 +156,7 @@ class spherical_polygon_sampler {
     LTC_HOST_DEVICE vec2 invert(const vec3& w) const {
         if (empty()) return vec2(T(0));
         if constexpr (widens) {
-            if (widened_) return vec2(wide_.invert(glm::vec<3, Wide>(w)));
+            if (widened_) return vec2(wide_.sampler.invert(glm::vec<3, Wide>(w)));
         }
         // The fan triangle of w: the last non-empty (v_0, v_k, v_k+1) with w past its first side
         // v_0 v_k (the polygon is convex: w is past the diagonals through v_0 up to its own
@@ -171,32 +176,58 @@ class spherical_polygon_sampler {
   private:
     static constexpr bool widens = !std::is_same_v<T, Wide>;
 
-    /// Sum of the fan triangles' perimeters, as chords: each unit vertex is within 2 u of its
-    /// exact direction (u = epsilon / 2), which moves a triangle's solid angle by up to 2 u times
-    /// its perimeter (first order): with the formulas' few u, T's relative error of the pdf and of
-    /// the triangles' probabilities is about u fan_perimeter() / solid_angle().
-    LTC_HOST_DEVICE T fan_perimeter() const {
-        T p = T(0);
-        for (std::size_t i = 0; i < n_vertices_; ++i) p += glm::length(v_[i + 1 < n_vertices_ ? i + 1 : 0] - v_[i]);
-        for (std::size_t k = 2; k + 1 < n_vertices_; ++k) p += T(2) * glm::length(v_[k] - v_[0]);  // diagonals
-        return p;
+    /// k sum d^2 over the k chords d of the fan triangles' perimeters (the edges, and each
+    /// diagonal twice): at least P^2, P the sum of the perimeters (Cauchy-Schwarz), and within a
+    /// factor k of it. Each unit vertex is within 2 u of its exact direction (u = epsilon / 2),
+    /// which moves a triangle's solid angle by up to 2 u times its perimeter (first order): with
+    /// the formulas' few u, T's relative error of the pdf and of the triangles' probabilities is
+    /// about u P / solid_angle().
+    LTC_HOST_DEVICE T fan_chords() const {
+        T sum = T(0);
+        for (std::size_t i = 0; i < n_vertices_; ++i) {
+            const vec3 d = v_[i + 1 < n_vertices_ ? i + 1 : 0] - v_[i];
+            sum += glm::dot(d, d);
+        }
+        for (std::size_t k = 2; k + 1 < n_vertices_; ++k) {  // the diagonals
+            const vec3 d = v_[k] - v_[0];
+            sum += T(2) * glm::dot(d, d);
+        }
+        return T(3 * n_vertices_ - 6) * sum;  // k = n + 2 (n - 3)
     }
 
     /// The polygon once more in Wide, from the input vertices (converted exactly, normalized in
     /// Wide): sample() and invert() go through it, and pdf() tests its unit vertices and normals
     /// rounded to T (within u of them, far inside the margin). Kept in T when Wide finds it empty.
-    LTC_HOST_DEVICE void widen(const vec3* vertices) {
+    LTC_HOST_DEVICE LTC_NOINLINE void widen(const vec3* vertices) {
         glm::vec<3, Wide> in[MaxVertices];
         for (std::size_t i = 0; i < n_vertices_; ++i) in[i] = glm::vec<3, Wide>(vertices[i]);
-        wide_ = spherical_polygon_sampler<Wide, MaxVertices, Wide>(in, n_vertices_);
-        const T total = T(wide_.total_);
-        if (wide_.empty() || !(total > T(0)) || !std::isfinite(total)) return;
+        wide_.sampler = wide_sampler(in, n_vertices_);  // trivial assignment: begins its lifetime
+        const wide_sampler& w = wide_.sampler;
+        const T total = T(w.total_);
+        if (w.empty() || !(total > T(0)) || !std::isfinite(total)) return;
         for (std::size_t i = 0; i < n_vertices_; ++i) {
-            v_[i] = vec3(wide_.v_[i]);
-            n_[i] = vec3(wide_.n_[i]);
+            v_[i] = vec3(w.v_[i]);
+            n_[i] = vec3(w.n_[i]);
         }
         total_ = total;
         widened_ = true;
+    }
+
+    /// pdf() for w outside the great circle of edge i, d = w.n_i < 0: 0 beyond the margin, else the
+    /// test with the margin on all edges; out of pdf()'s line.
+    LTC_HOST_DEVICE LTC_NOINLINE T pdf_near_boundary(const vec3& w, T d, std::size_t i) const {
+        const T m = detail::sample_margin<T>();
+        if (d * d > m * m * glm::dot(n_[i], n_[i])) return T(0);
+        for (std::size_t j = 0; j < n_vertices_; ++j)
+            if (!detail::inside_edge(w, n_[j], v_[j], v_[j + 1 < n_vertices_ ? j + 1 : 0])) return T(0);
+        return T(1) / total_;
+    }
+
+    /// sample() in Wide, out of sample()'s line. A unit vector in Wide rounded to T: unit within u,
+    /// and within u of the wide sample.
+    LTC_HOST_DEVICE LTC_NOINLINE vec3 sample_wide(const vec2& u) const {
+        if constexpr (widens) return vec3(wide_.sampler.sample(glm::vec<2, Wide>(u)));
+        else return vec3(T(0));
     }
 
     /// w on the side of the great circle through v_0 and v_i where v_i+1 is: the sign of
@@ -206,13 +237,22 @@ class spherical_polygon_sampler {
     }
 
     vec3 v_[MaxVertices]{};                                 // unit vertices
-    vec3 n_[MaxVertices]{};                                 // inward unit normals of the edges' great circles
+    vec3 n_[MaxVertices]{};                                 // inward normals of the edges' great circles
     spherical_triangle_sampler<T> tri_[MaxVertices - 2]{};  // (v_k, v_0, v_k+1), empty if not sampled
     T cdf_[MaxVertices - 2]{};                              // running sums of their solid angles
     T total_ = T(0), orientation_ = T(0);                   // solid angle; sign of the signed one
     std::size_t n_vertices_ = 0;
     bool widened_ = false;
-    std::conditional_t<widens, spherical_polygon_sampler<Wide, MaxVertices, Wide>, detail::no_wide_sampler> wide_;
+    using wide_sampler =
+        std::conditional_t<widens, spherical_polygon_sampler<Wide, MaxVertices, Wide>, detail::no_wide_sampler>;
+    /// The wide sampler, written by widen() and read only when widened_: not zeroed (it is most
+    /// of the sampler's size) for the polygons that never widen.
+    union wide_storage {
+        char none;
+        wide_sampler sampler;
+        LTC_HOST_DEVICE wide_storage() : none(0) {}
+    };
+    wide_storage wide_;
 };
 
 }  // namespace ltc

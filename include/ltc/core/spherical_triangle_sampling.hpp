@@ -49,25 +49,27 @@ LTC_HOST_DEVICE inline T arc_length(const glm::vec<3, T>& x, const glm::vec<3, T
 /// How far outside its triangle's (or polygon's) edges a sample may land, as the sine of the
 /// angle (u = epsilon / 2): sample() puts it within 35 u of the triangle of its unit vertices (c'
 /// leaves the arc a c by e's error, 8 u, and the sum's 3 u; the tangent at b 8 u; cos and sin of
-/// the arc from b 9 u; the last sum 3 u, normalize 4 u); an edge's unit normal from stable_cross
-/// and safe_normalize is off by 6 u, and w.n rounds by 3 u: 44 u <= 48 u = 24 epsilon.
+/// the arc from b 9 u; the last sum 3 u, normalize 4 u); an edge's normal from stable_cross is
+/// off by 5 u in direction (6 u once normalized), and w.n rounds by 3 u: 44 u <= 48 u = 24
+/// epsilon.
 template <typename T>
 LTC_HOST_DEVICE constexpr T sample_margin() {
     return T(24) * epsilon<T>();
 }
 
-/// The pdfs' inside test for the edge a b (unit vertices) with inward unit normal n: w on the
-/// inner side of its great circle, or outside by at most sample_margin() and on the side of the
-/// arc a b (w.(a + b) > 0; an arc of a polygon in an open hemisphere is shorter than pi). The
-/// second condition keeps out the antipodes of a polygon narrower than the margin, which are
-/// within the margin of every great circle; a sample outside an edge is next to that edge's arc
-/// (but where a vertex is collinear with its neighbours to within the margin and the polygon
-/// reaches a quarter circle past it along that great circle).
+/// The pdfs' inside test for the edge a b (unit vertices) with inward normal n (any length): w on
+/// the inner side of its great circle, or outside by at most sample_margin() (w.n >= -margin |n|,
+/// compared squared: |n|, about the chord |b - a|, is far above T's underflow for any edge that T
+/// resolves) and on the side of the arc a b (w.(a + b) > 0; an arc of a polygon in an open
+/// hemisphere is shorter than pi). The second condition keeps out the antipodes of a polygon
+/// narrower than the margin, which are within the margin of every great circle; a sample outside
+/// an edge is next to that edge's arc (but where a vertex is collinear with its neighbours to
+/// within the margin and the polygon reaches a quarter circle past it along that great circle).
 template <typename T>
 LTC_HOST_DEVICE inline bool inside_edge(const glm::vec<3, T>& w, const glm::vec<3, T>& n, const glm::vec<3, T>& a,
                                         const glm::vec<3, T>& b) {
-    const T d = glm::dot(w, n);
-    return d >= T(0) || (d >= -sample_margin<T>() && glm::dot(w, a + b) > T(0));
+    const T d = glm::dot(w, n), m = sample_margin<T>();
+    return d >= T(0) || (d * d <= m * m * glm::dot(n, n) && glm::dot(w, a + b) > T(0));
 }
 
 /// Unit vector orthogonal to unit x, in the plane of x and y, towards y: (x x y) x x normalized
@@ -89,10 +91,10 @@ class spherical_triangle_sampler {
     using vec3 = glm::vec<3, T>;
 
     /// An empty sampler (solid angle 0).
-    LTC_HOST_DEVICE spherical_triangle_sampler() : a_(T(0)), b_(T(0)), c_(T(0)) {}
+    LTC_HOST_DEVICE spherical_triangle_sampler() : a_(T(0)), b_(T(0)) {}
 
     /// a, b, c: unit vectors, either orientation.
-    LTC_HOST_DEVICE spherical_triangle_sampler(const vec3& a, const vec3& b, const vec3& c) : a_(a), b_(b), c_(c) {
+    LTC_HOST_DEVICE spherical_triangle_sampler(const vec3& a, const vec3& b, const vec3& c) : a_(a), b_(b) {
         const T omega = triangle_solid_angle(a, b, c);
         // Coincident or collinear vertices (a flat triangle), or non-finite input.
         if (!(std::abs(omega) > T(0)) || !std::isfinite(omega)) return;
@@ -102,13 +104,12 @@ class spherical_triangle_sampler {
         t_max_ = detail::arc_length(a, c);
         const T half = t_max_ / T(2);
         mid_ = std::cos(half) * a + std::sin(half) * e_;
-        const vec3 ab = s * detail::stable_cross(a, b, glm::dot(a, b));
+        n_ab_ = s * detail::stable_cross(a, b, glm::dot(a, b));
         one_plus_ab_ = glm::dot(a + b, a + b) / T(2);
-        p_ = glm::max(T(0), glm::dot(e_, ab));  // > 0 but for rounding in flat triangles
+        p_ = glm::max(T(0), glm::dot(e_, n_ab_));  // > 0 but for rounding in flat triangles
         q_ = glm::dot(e_, b);
-        n_ab_ = detail::safe_normalize(ab);
-        n_bc_ = detail::safe_normalize(s * detail::stable_cross(b, c, glm::dot(b, c)));
-        n_ca_ = detail::safe_normalize(s * detail::stable_cross(c, a, glm::dot(c, a)));
+        n_bc_ = s * detail::stable_cross(b, c, glm::dot(b, c));
+        n_ca_ = s * detail::stable_cross(c, a, glm::dot(c, a));
     }
 
     /// Solid angle |Omega| (Van Oosterom and Strackee); 0 when empty().
@@ -134,9 +135,8 @@ class spherical_triangle_sampler {
     /// great circle by at most detail::sample_margin<T>() next to its arc (detail::inside_edge).
     LTC_HOST_DEVICE T pdf(const vec3& w) const {
         if (empty()) return T(0);
-        const bool inside = detail::inside_edge(w, n_ab_, a_, b_) && detail::inside_edge(w, n_bc_, b_, c_) &&
-                            detail::inside_edge(w, n_ca_, c_, a_);
-        return inside ? T(1) / area_ : T(0);
+        const bool inside = glm::dot(w, n_ab_) >= T(0) && glm::dot(w, n_bc_) >= T(0) && glm::dot(w, n_ca_) >= T(0);
+        return inside ? T(1) / area_ : pdf_near_boundary(w);
     }
 
     /// The u in [0, 1]^2 that sample() maps to the unit direction w, clamped to [0, 1]^2 (u = 0
@@ -160,6 +160,16 @@ class spherical_triangle_sampler {
     }
 
   private:
+    /// pdf() for w outside a great circle: the test with the margin, out of pdf()'s line (c, not
+    /// stored, is the end of the arc from a; its rounding does not matter to the sign of w.(b + c)
+    /// next to the arc b c).
+    LTC_HOST_DEVICE LTC_NOINLINE T pdf_near_boundary(const vec3& w) const {
+        const vec3 c = arc_point(t_max_);
+        const bool inside = detail::inside_edge(w, n_ab_, a_, b_) && detail::inside_edge(w, n_bc_, b_, c) &&
+                            detail::inside_edge(w, n_ca_, c, a_);
+        return inside ? T(1) / area_ : T(0);
+    }
+
     /// The arc length t of c' from a for the sub-triangle's solid angle sub in [0, area_]: (2),
     /// with sin and cos of A'/2 (A' may exceed pi, and then cos(A'/2) < 0).
     LTC_HOST_DEVICE T arc_parameter(T sub) const {
@@ -168,9 +178,9 @@ class spherical_triangle_sampler {
     }
     LTC_HOST_DEVICE vec3 arc_point(T t) const { return std::cos(t) * a_ + std::sin(t) * e_; }
 
-    vec3 a_, b_, c_;
+    vec3 a_, b_;
     vec3 e_{T(0)}, mid_{T(0)};                      // tangent at a towards c; midpoint of the arc a c
-    vec3 n_ab_{T(0)}, n_bc_{T(0)}, n_ca_{T(0)};     // inward unit normals of the edges' great circles
+    vec3 n_ab_{T(0)}, n_bc_{T(0)}, n_ca_{T(0)};     // inward normals of the edges' great circles
     T area_ = T(0), t_max_ = T(0);                  // solid angle; arc length |a c|
     T one_plus_ab_ = T(0), p_ = T(0), q_ = T(0);    // the constants of (1) and (2)
 };
