@@ -12,7 +12,9 @@
 //   ltc::polygon_sample<float> x = s.sample(u);           // x.pdf = d.eval(x.direction) / s.integral()
 //
 // The polygon: convex and planar, at most MaxVertices vertices (see the projected sampler for
-// the degenerate cases, which give an empty() sampler).
+// the degenerate cases, which give an empty() sampler). M^-1 P is computed in T, and once more
+// in the projected sampler's wider type where that sampler widens its fan (a tiny or grazing
+// M^-1 P in float): then I_D carries no rounding of M^-1 p_i in T.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -46,7 +48,7 @@ class ltc_polygon_sampler {
         vec3 local[MaxVertices];
         const detail::transformed_vertices<T> to_cosine{lobe_.inverse_matrix(), vertices};
         for (std::size_t i = 0; i < n; ++i) local[i] = to_cosine(i);
-        cosine_ = projected_polygon_sampler<T, MaxVertices>(local, n);
+        cosine_ = projected_polygon_sampler<T, MaxVertices>(local, n, lobe_.inverse_matrix(), vertices);
         // A numerically degenerate M can map even the polygon's interior outside it and back:
         // then no sample could have pdf > 0, and the polygon counts as empty.
         if (!cosine_.empty()) {

@@ -25,8 +25,13 @@
 // horizon ~d^2 from terms of its width, and F's relative error is epsilon times their ratio
 // (projected_triangle::condition). Where that exceeds 2^-12 in some fan triangle (in float: a
 // triangle under ~1e-3 rad, or a sliver within ~0.01 rad of the horizon), the whole fan is
-// evaluated in the wider type Wide (double for float; Wide = T opts out, e.g. on a GPU), so that
-// the distribution stays w.z / E to ~2^-12 or better in float and to rounding in double. (In
+// rebuilt in the wider type Wide (double for float; Wide = T opts out, e.g. on a GPU) from the
+// input vertices: converted exactly, then clipped and normalized in Wide (and, for
+// ltc_polygon_sampler, multiplied by M^-1 in Wide), since T's unit vertices alone are off by
+// epsilon, which is epsilon / h of the size h of a tiny polygon. The distribution then stays
+// w.z / E to ~2^-12 or better in float (E itself is the rounding to T of its value in Wide, for
+// polygons of the size Wide resolves) and to rounding in double; pdf()'s great circles are
+// those of the unit vertices in Wide, rounded to T. (In
 // float without it, a quad clipped to 0.001 rad above the horizon put 72% of its samples in a
 // sixteenth of its area; the tests found it.)
 //
@@ -40,6 +45,7 @@
 #include <ltc/core/horizon_clip.hpp>
 #include <ltc/detail/math.hpp>
 #include <ltc/core/detail/projected_triangle.hpp>
+#include <ltc/detail/wider.hpp>
 
 #include <glm/glm.hpp>
 
@@ -57,10 +63,6 @@ struct polygon_sample {
 };
 
 namespace detail {
-
-/// The wider type of the ill-conditioned fans (file comment): double for float.
-template <typename T>
-using wider_t = std::conditional_t<std::is_same_v<T, float>, double, T>;
 
 /// The fan of triangles (v0, v_i, v_i+1) of a clipped polygon, in precision C: their masses'
 /// cumulative sums choose the triangle, and u.x is rescaled into it.
@@ -137,34 +139,15 @@ class projected_polygon_sampler {
 
     /// vertices[0..n): the polygon seen from the origin, in the frame whose z is the normal.
     LTC_HOST_DEVICE projected_polygon_sampler(const vec3* vertices, std::size_t n) {
-        if (n < 3 || n > MaxVertices) return;
-        vec3 clipped[capacity];
-        const std::size_t m = clip_to_horizon(vertices, n, clipped);
-        if (m < 3) return;
-        for (std::size_t i = 0; i < m; ++i) {
-            v_[i] = detail::safe_normalize(clipped[i]);
-            if (v_[i] == vec3(T(0)) || !detail::is_finite(v_[i])) return;  // seen edge-on
-        }
-        fan_.build(v_, m);
-        T total = fan_.total, orientation = fan_.orientation;
-        if constexpr (widens) {
-            if (fan_.worst_condition * detail::epsilon<T>() > T(1.0 / 4096)) {
-                wide_fan_.build(v_, m);
-                wide_ = true;
-                total = T(wide_fan_.total);
-                orientation = T(wide_fan_.orientation);
-            }
-        }
-        // pdf = w.z / E <= 1 / E must stay finite: a subnormal E is an empty polygon.
-        if (!(total >= T(4) * detail::min_normal<T>()) || !std::isfinite(total)) return;
-        vertex_count_ = m;
-        total_ = total;
-        // Great-circle normals pointing inwards, for pdf().
-        for (std::size_t i = 0; i < m; ++i) {
-            const vec3& p = v_[i];
-            const vec3& q = v_[(i + 1) % m];
-            edge_normal_[i] = orientation * detail::stable_cross(p, q, glm::dot(p, q));
-        }
+        init(vertices, n, nullptr, nullptr);
+    }
+
+    /// The polygon m_inv raw[0..n) (ltc_polygon_sampler's M^-1 P), given also as vertices[i], the
+    /// product evaluated in T (up to a positive factor each): the fan in T is built from vertices,
+    /// a fan in Wide recomputes the product in Wide (file comment).
+    LTC_HOST_DEVICE projected_polygon_sampler(const vec3* vertices, std::size_t n, const glm::mat<3, 3, T>& m_inv,
+                                              const vec3* raw) {
+        init(vertices, n, &m_inv, raw);
     }
 
     LTC_HOST_DEVICE bool empty() const { return !(total_ > T(0)); }
@@ -246,6 +229,64 @@ class projected_polygon_sampler {
 
   private:
     static constexpr bool widens = !std::is_same_v<T, Wide>;
+    using wide_vec3 = glm::vec<3, Wide>;
+
+    /// The constructors: m_inv null for the polygon vertices[0..n) itself.
+    LTC_HOST_DEVICE void init(const vec3* vertices, std::size_t n, const glm::mat<3, 3, T>* m_inv,
+                              const vec3* raw) {
+        if (n < 3 || n > MaxVertices) return;
+        vec3 clipped[capacity];
+        std::size_t m = clip_to_horizon(vertices, n, clipped);
+        if (m < 3) return;
+        for (std::size_t i = 0; i < m; ++i) {
+            v_[i] = detail::safe_normalize(clipped[i]);
+            if (v_[i] == vec3(T(0)) || !detail::is_finite(v_[i])) return;  // seen edge-on
+        }
+        fan_.build(v_, m);
+        T total = fan_.total, orientation = fan_.orientation;
+        bool normals_done = false;
+        if constexpr (widens) {
+            if (fan_.worst_condition * detail::epsilon<T>() > T(1.0 / 4096)) {
+                // The input once more in Wide: converted exactly (and multiplied by M^-1 in Wide),
+                // clipped and normalized in Wide, so that the fan sees no rounding of T.
+                wide_vec3 in[MaxVertices], wclipped[capacity], wv[capacity];
+                for (std::size_t i = 0; i < n; ++i)
+                    in[i] = m_inv ? glm::mat<3, 3, Wide>(*m_inv) * wide_vec3(raw[i]) : wide_vec3(vertices[i]);
+                const std::size_t mw = clip_to_horizon(in, n, wclipped);
+                bool ok = mw >= 3;
+                for (std::size_t i = 0; ok && i < mw; ++i) {
+                    wv[i] = detail::safe_normalize(wclipped[i]);
+                    ok = wv[i] != wide_vec3(Wide(0)) && detail::is_finite(wv[i]);
+                }
+                if (ok) {
+                    wide_fan_.build(wv, mw);
+                    wide_ = true;
+                    total = T(wide_fan_.total);
+                    orientation = T(wide_fan_.orientation);
+                    // The unit vertices and the inward great-circle normals for pdf() from Wide.
+                    m = mw;
+                    for (std::size_t i = 0; i < m; ++i) {
+                        const wide_vec3& p = wv[i];
+                        const wide_vec3& q = wv[(i + 1) % m];
+                        v_[i] = vec3(p);
+                        edge_normal_[i] = vec3(Wide(orientation) * detail::stable_cross(p, q, glm::dot(p, q)));
+                    }
+                    normals_done = true;
+                }
+            }
+        }
+        // pdf = w.z / E <= 1 / E must stay finite: a subnormal E is an empty polygon.
+        if (!(total >= T(4) * detail::min_normal<T>()) || !std::isfinite(total)) return;
+        vertex_count_ = m;
+        total_ = total;
+        // Great-circle normals pointing inwards, for pdf().
+        for (std::size_t i = 0; !normals_done && i < m; ++i) {
+            const vec3& p = v_[i];
+            const vec3& q = v_[(i + 1) % m];
+            edge_normal_[i] = orientation * detail::stable_cross(p, q, glm::dot(p, q));
+        }
+    }
+
     vec3 v_[capacity]{};
     vec3 edge_normal_[capacity]{};
     detail::projected_fan<T, capacity - 2> fan_;

@@ -46,6 +46,32 @@ LTC_HOST_DEVICE inline T arc_length(const glm::vec<3, T>& x, const glm::vec<3, T
     return obtuse ? pi<T>() - T(2) * half : T(2) * half;
 }
 
+/// How far outside its triangle's (or polygon's) edges a sample may land, as the sine of the
+/// angle (u = epsilon / 2): sample() puts it within 35 u of the triangle of its unit vertices (c'
+/// leaves the arc a c by e's error, 8 u, and the sum's 3 u; the tangent at b 8 u; cos and sin of
+/// the arc from b 9 u; the last sum 3 u, normalize 4 u); an edge's normal from stable_cross is
+/// off by 5 u in direction (6 u once normalized), and w.n rounds by 3 u: 44 u <= 48 u = 24
+/// epsilon.
+template <typename T>
+LTC_HOST_DEVICE constexpr T sample_margin() {
+    return T(24) * epsilon<T>();
+}
+
+/// The pdfs' inside test for the edge a b (unit vertices) with inward normal n (any length): w on
+/// the inner side of its great circle, or outside by at most sample_margin() (w.n >= -margin |n|,
+/// compared squared: |n|, about the chord |b - a|, is far above T's underflow for any edge that T
+/// resolves) and on the side of the arc a b (w.(a + b) > 0; an arc of a polygon in an open
+/// hemisphere is shorter than pi). The second condition keeps out the antipodes of a polygon
+/// narrower than the margin, which are within the margin of every great circle; a sample outside
+/// an edge is next to that edge's arc (but where a vertex is collinear with its neighbours to
+/// within the margin and the polygon reaches a quarter circle past it along that great circle).
+template <typename T>
+LTC_HOST_DEVICE inline bool inside_edge(const glm::vec<3, T>& w, const glm::vec<3, T>& n, const glm::vec<3, T>& a,
+                                        const glm::vec<3, T>& b) {
+    const T d = glm::dot(w, n), m = sample_margin<T>();
+    return d >= T(0) || (d * d <= m * m * glm::dot(n, n) && glm::dot(w, a + b) > T(0));
+}
+
 /// Unit vector orthogonal to unit x, in the plane of x and y, towards y: (x x y) x x normalized
 /// with the cross product of stable_cross (0 when y is +-x).
 template <typename T>
@@ -105,11 +131,12 @@ class spherical_triangle_sampler {
     }
 
     /// 1 / solid_angle() for unit w on the inner side of the three great circles, 0 elsewhere (and
-    /// when empty()).
+    /// when empty()). Every sample has pdf > 0: w also counts as inside an edge when outside its
+    /// great circle by at most detail::sample_margin<T>() next to its arc (detail::inside_edge).
     LTC_HOST_DEVICE T pdf(const vec3& w) const {
         if (empty()) return T(0);
         const bool inside = glm::dot(w, n_ab_) >= T(0) && glm::dot(w, n_bc_) >= T(0) && glm::dot(w, n_ca_) >= T(0);
-        return inside ? T(1) / area_ : T(0);
+        return inside ? T(1) / area_ : pdf_near_boundary(w);
     }
 
     /// The u in [0, 1]^2 that sample() maps to the unit direction w, clamped to [0, 1]^2 (u = 0
@@ -133,6 +160,16 @@ class spherical_triangle_sampler {
     }
 
   private:
+    /// pdf() for w outside a great circle: the test with the margin, out of pdf()'s line (c, not
+    /// stored, is the end of the arc from a; its rounding does not matter to the sign of w.(b + c)
+    /// next to the arc b c).
+    LTC_HOST_DEVICE LTC_NOINLINE T pdf_near_boundary(const vec3& w) const {
+        const vec3 c = arc_point(t_max_);
+        const bool inside = detail::inside_edge(w, n_ab_, a_, b_) && detail::inside_edge(w, n_bc_, b_, c) &&
+                            detail::inside_edge(w, n_ca_, c, a_);
+        return inside ? T(1) / area_ : T(0);
+    }
+
     /// The arc length t of c' from a for the sub-triangle's solid angle sub in [0, area_]: (2),
     /// with sin and cos of A'/2 (A' may exceed pi, and then cos(A'/2) < 0).
     LTC_HOST_DEVICE T arc_parameter(T sub) const {

@@ -118,7 +118,10 @@ struct projected_triangle {
         n_c = glm::dot(t_c, n);
         k_b = glm::cross(a, t_b).z;
         k_c = glm::cross(a, t_c).z;
-        if (!(alpha > T(0)) || !(dist_a > T(0)) || t_b == vec3(T(0))) return;  // degenerate
+        // Degenerate: a within rounding of the great circle bc (dist_a errs by up to 5 epsilon
+        // |a - b|: n's direction 6 u, a - b and the dot 4 u), where L(psi) = atan2(dist_a, -P.n)
+        // would be a ratio of rounding errors; the triangle is flat to rounding (mass 0).
+        if (!(alpha > T(0)) || !(dist_a > T(8) * epsilon<T>() * glm::length(a - b)) || t_b == vec3(T(0))) return;
         theta_ab = arc(T(1), T(0));
         beta_b = position(T(1), T(0));
         const point end = signed_value(alpha);
