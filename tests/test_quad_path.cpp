@@ -8,11 +8,11 @@
 // crossings (from the raw vertices here, from the unit vertices there: the same cancellation
 // kappa_X amplifies the rounding of either) and in the order of summation (5 terms against m).
 // Both are bounded by ltc_test::clip_tolerance with same_normalization. In float with the
-// symmetric fits the quad path runs on SIMD lanes (ltc/core/detail/quad_lanes.hpp), one rsqrt of
-// |p|^2 |q|^2 per edge instead of unit vertices, the batch kernel's arithmetic: bounded by
-// clip_tolerance without same_normalization (tests/test_batch.cpp derives it). Where the quad
-// path hands over to the general path (non-convex quads with two runs above the horizon, vertices
-// at the origin, tiny or huge), the results are bitwise equal.
+// symmetric fits the quad path runs on four lanes (ltc/core/detail/quad_lanes.hpp), in every
+// build, with crossings from the raw vertices normalized by 1 / sqrt of their squared lengths:
+// bounded by clip_tolerance without same_normalization (tests/test_batch.cpp derives it). Where
+// the quad path hands over to the general path (non-convex quads with two runs above the horizon,
+// vertices at the origin, tiny or huge), the results are bitwise equal.
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"
 

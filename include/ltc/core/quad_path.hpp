@@ -2,8 +2,9 @@
 // light shape: clipped before normalization by a switch on the vertices above the horizon (as the
 // paper's shader does), then five edge terms without a branch on the vertex count. form_factor
 // (ltc/core/form_factor.hpp) takes it for n = 4 and falls back to the general path where it
-// declines. In float with the symmetric fits (the float default) it runs on SIMD lanes instead,
-// one edge per lane (ltc/core/detail/quad_lanes.hpp).
+// declines. In float with the symmetric fits (minimax_rational, the float default, and
+// polynomial) it runs on four lanes instead, one edge per lane (ltc/core/detail/quad_lanes.hpp),
+// in every build (with or without LTC_NO_SIMD, in CUDA device code), with the same bits in each.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -43,22 +44,19 @@ LTC_HOST_DEVICE LTC_INLINE bool in_range_all(T first, Ts... rest) {
 /// |M^-1 p| beyond about 1e-7 or 1e7, whose crossings' squared lengths scale as |M^-1 p|^4, and
 /// five vertices whose |p|^2 sum to 1e30 or more), a non-finite vertex anywhere, or two separate
 /// runs of vertices above the horizon (only a non-convex quad has them). Vertices on the plane
-/// z = 0 count as above, as in clip_to_horizon.
+/// z = 0 count as above, as in clip_to_horizon. For float and the symmetric fits
+/// (quad_on_lanes) the lanes of quad_lanes.hpp compute the sum instead, with hand-backs of their
+/// own (that file's comment).
 template <typename T, typename Policy, typename Vertices>
 LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
     using vec3 = glm::vec<3, T>;
+    if constexpr (quad_on_lanes<T, Policy>) return quad_form_factor_lanes<Policy>(v, sum);
     vec3 q[5];
     unsigned above = 0;
     for (unsigned i = 0; i < 4; ++i) {
         q[i] = raw_vertex<T>(v, i);
         above |= (q[i].z >= T(0) ? 1u : 0u) << i;
     }
-#if LTC_SIMD
-    if constexpr (quad_on_lanes<T, Policy>) {
-        const glm::vec3 corners[4] = {q[0], q[1], q[2], q[3]};
-        return quad_form_factor_lanes<Policy>(v, corners, sum);
-    }
-#endif
     if (above == 5u || above == 10u) return false;
     sum = T(0);
     // All below: 0, unless a vertex is not finite (M^-1 p may overflow to NaN, which counts as
