@@ -24,9 +24,7 @@
 #include <ltc/core/line_integral.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
-#include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
-#include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>

@@ -92,7 +92,6 @@
 #include <ltc/shading/textured_cells.hpp>
 #include <ltc/shading/textured_fetch.hpp>
 #include <ltc/core/polygon.hpp>
-#include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light_radiance.hpp>  // polygon_light_result, shade_polygon_light(frame, lobe, ...)
 #include <ltc/shading/shading_frame.hpp>
 #include <ltc/core/transformed.hpp>
