@@ -1,5 +1,6 @@
-// The pre-0.2 flat header paths, now deprecated forwarding headers, still compile and work from
-// outside the project (README, "Headers and the paper").
+// The pre-0.2 flat header paths and the 0.2 paths of headers that moved down a layer (the BRDF
+// models, the table format, the sphere form factor), now deprecated forwarding headers, still
+// compile and work from outside the project (README, "Headers and the paper").
 #include <ltc/batch.hpp>
 #include <ltc/brdf/beckmann.hpp>
 #include <ltc/brdf/ggx.hpp>
@@ -7,11 +8,17 @@
 #include <ltc/clamped_cosine.hpp>
 #include <ltc/clipless.hpp>
 #include <ltc/fit.hpp>
+#include <ltc/fitting/brdf/beckmann.hpp>
+#include <ltc/fitting/brdf/ggx.hpp>
+#include <ltc/fitting/brdf/model.hpp>
+#include <ltc/fitting/brdf/schlick.hpp>
 #include <ltc/ggx.hpp>
 #include <ltc/ground_truth.hpp>
 #include <ltc/light_texture.hpp>
 #include <ltc/polygon.hpp>
 #include <ltc/shading.hpp>
+#include <ltc/shading/sphere_form_factor.hpp>
+#include <ltc/shading/table.hpp>
 #include <ltc/squared_clamped_cosine.hpp>
 #include <ltc/table.hpp>
 #include <ltc/textured.hpp>
