@@ -16,7 +16,9 @@
 #include <ltc/config.hpp>
 
 #include <ltc/shading/ggx_two_lobe_fetch.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/polygon_light_integrals.hpp>  // integrate_polygon_light_ltc, horizon_clipping
+#include <ltc/shading/polygon_light_radiance.hpp>   // polygon_light_result, shade_polygon_light(frame, lobe, ...)
+#include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>
 
