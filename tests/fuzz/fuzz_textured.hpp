@@ -1,5 +1,5 @@
 // The fuzz harness's checks of the textured-light paths (ltc/shading/textured_cells.hpp,
-// ltc/shading/textured_light.hpp), called by tests/fuzz/fuzz_integrals.cpp for every input.
+// ltc/shading/textured_light.hpp), called by tests/fuzz/fuzz_textured.cpp for every input.
 //
 // Input: the harness's fuzzed M^-1, polygon, P, N, V and roughness (the light is the polygon's
 // first four vertices, completed by those of a unit square above the shading point where it has
