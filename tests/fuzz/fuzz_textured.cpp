@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <unistd.h>
+
 namespace {
 
 using namespace ltc_fuzz;
@@ -27,9 +29,15 @@ void run(FuzzedDataProvider& in) {
 // glibc's get_nprocs (behind std::thread::hardware_concurrency) reads
 // /sys/devices/system/cpu/online on every call, and light_texture's filter asks on every pass,
 // about seven times a texture: a sixth of this harness's time went to those reads. The harness
-// answers itself (an executable's definition takes the place of libc's). No path changes:
-// parallel_for runs min(hardware_concurrency, n / 16) threads, one for the at most 16 rows or
-// columns of the textures here.
-extern "C" int get_nprocs() noexcept { return 1; }
+// answers in its place (an executable's definition takes the place of libc's) with the count
+// sysconf reads once (glibc's sysconf calls its own internal get_nprocs, not this one): the same
+// answer, once.
+extern "C" int get_nprocs() noexcept {
+    static const int n = [] {
+        const long c = sysconf(_SC_NPROCESSORS_ONLN);
+        return c > 0 ? static_cast<int>(c) : 1;
+    }();
+    return n;
+}
 
 LTC_FUZZ_ENTRY(run)
