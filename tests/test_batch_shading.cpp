@@ -461,9 +461,9 @@ TEST_CASE("two-lobe batch shading of many quad lights matches shade_polygon_ligh
 }
 
 TEST_CASE("quad-light batches: coordinates near FLT_MAX give finite results", "[batch][shading][bad_input]") {
-    // The fuzzer's input (tests/fuzz/fuzz_integrals.cpp): the differences p - P near FLT_MAX made
-    // the local frame's dot products overflow (NaN) until the batch divided them by their largest
-    // coordinate, as ltc::integrate_polygon_light does.
+    // The fuzzer's input (tests/fuzz/, now fuzz_shading.cpp): the differences p - P near FLT_MAX
+    // made the local frame's dot products overflow (NaN) until the batch divided them by their
+    // largest coordinate, as ltc::integrate_polygon_light does.
     const float big = 3.40282347e+38f;
     const glm::vec3 P(-6.6722e+36f, -big, -big), N(-big), V(-big), F0(0.04f), albedo(0.5f);
     const glm::vec3 quad[4] = {{-7.60631128e+37f, -7.60631128e+37f, -big},

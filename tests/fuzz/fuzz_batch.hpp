@@ -1,5 +1,5 @@
 // The fuzz harness's checks of the batch API (ltc/shading/batch.hpp), called by
-// tests/fuzz/fuzz_integrals.cpp for every input.
+// tests/fuzz/fuzz_shading.cpp for every input.
 #pragma once
 
 #include "fuzz_batch_items.hpp"
@@ -153,7 +153,8 @@ template <typename T>
 }
 
 template <typename Policy, typename T>
-void check_batch_policy(const batch_items<T>& it, bool quads, std::size_t n, const char* policy) {
+void check_batch_policy(const batch_items<T>& it, bool quads, std::size_t n, const char* policy,
+                        ltc::batch::isa which, ltc::sidedness s) {
     const auto mats = it.matrices();
     ltc::batch::quad_soa<T> quad;
     ltc::batch::ngon_soa<T> ngon;
@@ -161,76 +162,87 @@ void check_batch_policy(const batch_items<T>& it, bool quads, std::size_t n, con
     for (std::size_t k = 0; k < 4 && k < it.nv; ++k) quad.x[k] = it.px[k], quad.y[k] = it.py[k], quad.z[k] = it.pz[k];
     ngon.n = n, ngon.x = it.px.data(), ngon.y = it.py.data(), ngon.z = it.pz.data();
     const double bound = static_cast<double>(ltc::clipped_capacity(n)) / 2 * (1 + 1e-3);
-    std::vector<double> tol(it.count);
-    std::vector<bool> exact(it.count), comparable(it.count);
+    // Each item's tolerance, whether it must match exactly, and whether the comparison applies:
+    // computed where first needed (a result that differs from the scalar path's), as they cost
+    // more than the integrals (long double, per vertex), and most results match.
+    struct bounds {
+        bool known = false, exact = false, comparable = false;
+        double tol = 0;
+    };
+    std::vector<bounds> b(it.count);
+    const auto at = [&](std::size_t i) -> const bounds& {
+        bounds& r = b[i];
+        if (!r.known) {
+            long double kappa = 1;
+            conditioning(it.m_inv[i], it.p[i], n, r.exact, kappa);
+            r.tol = batch_tolerance<Policy>(it.m_inv[i], it.p[i], n, static_cast<double>(kappa));
+            r.comparable = std::isfinite(r.tol) && kappa <= 1e3L;
+            r.known = true;
+        }
+        return r;
+    };
+    std::vector<T> ref(it.count);
     for (std::size_t i = 0; i < it.count; ++i) {
-        bool must_fall_back = false;
-        long double kappa = 1;
-        conditioning(it.m_inv[i], it.p[i], n, must_fall_back, kappa);
-        tol[i] = batch_tolerance<Policy>(it.m_inv[i], it.p[i], n, static_cast<double>(kappa));
-        exact[i] = must_fall_back;
-        comparable[i] = std::isfinite(tol[i]) && kappa <= 1e3L;
+        const auto d = ltc::transformed<ltc::clamped_cosine<T, Policy>>::from_inverse(it.m_inv[i]);
+        ref[i] = d.integrate(it.p[i].data(), n, s);
+        if (!std::isfinite(ref[i]) || !(ref[i] >= T(0)) || !(static_cast<double>(ref[i]) <= bound))
+            batch_failure("scalar path out of range", policy, quads, n, s, ltc::batch::isa::scalar, i, it, ref[i],
+                          ref[i], 0.0);
+        // The reference only sees directions: each vertex brought to a largest component in
+        // [1, 2) by an exact power of two (rescale_pow2) gives the same integral, up to the
+        // normalization's rounding, which tol covers. Else the comparisons below would accept
+        // a batch that shares an error of the scalar path (one that depends on the vertices'
+        // lengths, say).
+        std::vector<glm::vec<3, T>> unit_scale(it.p[i].begin(), it.p[i].begin() + static_cast<std::ptrdiff_t>(n));
+        for (auto& q : unit_scale) q = ltc::detail::rescale_pow2(q);
+        const T same = d.integrate(unit_scale.data(), n, s);
+        if (same != ref[i] && at(i).comparable &&
+            !(std::abs(static_cast<double>(ref[i]) - static_cast<double>(same)) <= at(i).tol))
+            batch_failure("scalar path depends on the vertices' lengths (out: as given, scalar: rescaled)", policy,
+                          quads, n, s, ltc::batch::isa::scalar, i, it, ref[i], same, at(i).tol);
     }
-    for (const auto s : {ltc::sidedness::two_sided, ltc::sidedness::one_sided}) {
-        std::vector<T> ref(it.count);
-        for (std::size_t i = 0; i < it.count; ++i) {
-            const auto d = ltc::transformed<ltc::clamped_cosine<T, Policy>>::from_inverse(it.m_inv[i]);
-            ref[i] = d.integrate(it.p[i].data(), n, s);
-            if (!std::isfinite(ref[i]) || !(ref[i] >= T(0)) || !(static_cast<double>(ref[i]) <= bound))
-                batch_failure("scalar path out of range", policy, quads, n, s, ltc::batch::isa::scalar, i, it, ref[i],
-                              ref[i], 0.0);
-            // The reference only sees directions: each vertex brought to a largest component in
-            // [1, 2) by an exact power of two (rescale_pow2) gives the same integral, up to the
-            // normalization's rounding, which tol covers. Else the comparisons below would accept
-            // a batch that shares an error of the scalar path (one that depends on the vertices'
-            // lengths, say).
-            std::vector<glm::vec<3, T>> unit_scale(it.p[i].begin(), it.p[i].begin() + static_cast<std::ptrdiff_t>(n));
-            for (auto& q : unit_scale) q = ltc::detail::rescale_pow2(q);
-            const T same = d.integrate(unit_scale.data(), n, s);
-            if (comparable[i] && !(std::abs(static_cast<double>(ref[i]) - static_cast<double>(same)) <= tol[i]))
-                batch_failure("scalar path depends on the vertices' lengths (out: as given, scalar: rescaled)", policy,
-                              quads, n, s, ltc::batch::isa::scalar, i, it, ref[i], same, tol[i]);
-        }
-        for (const auto which : batch_isas()) {
-            std::vector<T> out(it.count, T(-1));
-            if (quads)
-                ltc::batch::integrate_quads<Policy>(quad, out.data(), it.count, s, which);
-            else
-                ltc::batch::integrate_ngons<Policy>(ngon, out.data(), it.count, s, which);
-            const std::size_t vectorized = kernel_items<T>(which, it.count);
-            for (std::size_t i = 0; i < it.count; ++i) {
-                const T o = out[i];
-                if (!std::isfinite(o)) batch_failure("non-finite", policy, quads, n, s, which, i, it, o, ref[i], tol[i]);
-                if (!(o >= T(0))) batch_failure("negative", policy, quads, n, s, which, i, it, o, ref[i], tol[i]);
-                if (!(static_cast<double>(o) <= bound))
-                    batch_failure("above m / 2", policy, quads, n, s, which, i, it, o, ref[i], tol[i]);
-                if (o == ref[i]) continue;
-                if (i >= vectorized || exact[i])
-                    batch_failure("differs from the scalar path it must be", policy, quads, n, s, which, i, it, o,
-                                  ref[i], 0.0);
-                if (comparable[i] && !(std::abs(static_cast<double>(o) - static_cast<double>(ref[i])) <= tol[i]))
-                    batch_failure("beyond tolerance", policy, quads, n, s, which, i, it, o, ref[i], tol[i]);
-            }
-        }
+    std::vector<T> out(it.count, T(-1));
+    if (quads)
+        ltc::batch::integrate_quads<Policy>(quad, out.data(), it.count, s, which);
+    else
+        ltc::batch::integrate_ngons<Policy>(ngon, out.data(), it.count, s, which);
+    const std::size_t vectorized = kernel_items<T>(which, it.count);
+    for (std::size_t i = 0; i < it.count; ++i) {
+        const T o = out[i];
+        if (!std::isfinite(o)) batch_failure("non-finite", policy, quads, n, s, which, i, it, o, ref[i], at(i).tol);
+        if (!(o >= T(0))) batch_failure("negative", policy, quads, n, s, which, i, it, o, ref[i], at(i).tol);
+        if (!(static_cast<double>(o) <= bound))
+            batch_failure("above m / 2", policy, quads, n, s, which, i, it, o, ref[i], at(i).tol);
+        if (o == ref[i]) continue;
+        if (i >= vectorized || at(i).exact)
+            batch_failure("differs from the scalar path it must be", policy, quads, n, s, which, i, it, o, ref[i],
+                          0.0);
+        if (at(i).comparable && !(std::abs(static_cast<double>(o) - static_cast<double>(ref[i])) <= at(i).tol))
+            batch_failure("beyond tolerance", policy, quads, n, s, which, i, it, o, ref[i], at(i).tol);
     }
 }
 
 // Quads (integrate_quads, the fixed-N kernel) or a runtime-n batch (integrate_ngons, n in
 // 0..18: n < 3, the unrolled and rolled edge loops, and the scalar path's heap buffer for n > 16),
-// per-item or shared matrices, both sidednesses, either SIMD policy, every instruction set.
+// per-item or shared matrices, either sidedness, either SIMD policy, any instruction set this CPU
+// runs.
 template <typename T>
 void check_batch(FuzzedDataProvider& in, const glm::mat<3, 3, T>& m, const std::vector<glm::vec<3, T>>& v) {
     const std::size_t n = (in.ConsumeIntegral<std::uint8_t>() + 5u) % 19u;  // 5 for input that has run out
     const batch_items<T> it = make_items<T>(in, m, v, std::max<std::size_t>(n, 4));
-    // One shape and one policy per input (a fuzzed choice): four batch checks per input slowed
-    // the whole harness, the scalar checks included, 13-fold.
+    // One shape, one policy, one instruction set and one sidedness per input (a fuzzed choice):
+    // four batch checks per input slowed the whole harness, the scalar checks included, 13-fold;
+    // over a run the choices cover every combination.
     const unsigned choice = in.ConsumeIntegral<std::uint8_t>();
     const bool quads = (choice & 1u) == 0u;
     const std::size_t nk = quads ? 4 : n;
+    const std::vector<ltc::batch::isa> isas = batch_isas();
+    const ltc::batch::isa which = isas[((choice >> 2) & 3u) % isas.size()];
+    const ltc::sidedness side = (choice & 16u) == 0u ? ltc::sidedness::two_sided : ltc::sidedness::one_sided;
     if ((choice & 2u) == 0u)
-        check_batch_policy<ltc::edge_policy::minimax_rational>(it, quads, nk, "minimax_rational");
+        check_batch_policy<ltc::edge_policy::minimax_rational>(it, quads, nk, "minimax_rational", which, side);
     else
-        check_batch_policy<ltc::edge_policy::polynomial>(it, quads, nk, "polynomial");
+        check_batch_policy<ltc::edge_policy::polynomial>(it, quads, nk, "polynomial", which, side);
 }
 
 }  // namespace ltc_fuzz

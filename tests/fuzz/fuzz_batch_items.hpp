@@ -1,5 +1,6 @@
-// The fuzz harness's batches (tests/fuzz/fuzz_batch.hpp): the instruction sets, and items made
-// from the fuzzed bytes, in structures of arrays that AddressSanitizer watches.
+// The fuzz harness's batches (tests/fuzz/fuzz_batch.hpp, for tests/fuzz/fuzz_shading.cpp): the
+// instruction sets, and items made from the fuzzed bytes, in structures of arrays that
+// AddressSanitizer watches.
 #pragma once
 
 #include "fuzz_common.hpp"

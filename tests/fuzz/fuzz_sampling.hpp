@@ -1,6 +1,6 @@
 // The fuzz harness's checks of the polygon samplers (ltc/core/projected_solid_angle_sampling.hpp,
 // ltc/core/ltc_polygon_sampling.hpp, ltc/core/polygon_area_sampling.hpp), called by
-// tests/fuzz/fuzz_integrals.cpp for every input.
+// tests/fuzz/fuzz_samplers.cpp for every input.
 //
 // Input: the harness's fuzzed matrix (M^-1 of the LTC, through the checked factory; skipped where
 // it rejects it) and polygon (its first 8 vertices, and all of them, which gives an empty sampler

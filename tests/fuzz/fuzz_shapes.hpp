@@ -1,6 +1,6 @@
 // The fuzz harness's checks of the line, disk and sphere lights (ltc/core/line_integral.hpp,
 // ltc/core/ellipse_integral.hpp, ltc/shading/{line,tube,disk,sphere}_light.hpp), called by
-// tests/fuzz/fuzz_integrals.cpp for every input.
+// tests/fuzz/fuzz_shapes.cpp for every input.
 //
 // Input: the harness's fuzzed M^-1 and its first two polygon vertices (the segment, the disk's
 // centre and normal, the sphere's centre; the origin where the polygon has fewer), P, N, V and

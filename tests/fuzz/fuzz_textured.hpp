@@ -1,5 +1,5 @@
 // The fuzz harness's checks of the textured-light paths (ltc/shading/textured_cells.hpp,
-// ltc/shading/textured_light.hpp), called by tests/fuzz/fuzz_integrals.cpp for every input.
+// ltc/shading/textured_light.hpp), called by tests/fuzz/fuzz_textured.cpp for every input.
 //
 // Input: the harness's fuzzed M^-1, polygon, P, N, V and roughness (the light is the polygon's
 // first four vertices, completed by those of a unit square above the shading point where it has
@@ -9,17 +9,18 @@
 //   texels     per texture a scale 2^e (e in -70..60) and its sign mode (non-negative, or for one
 //              input in eight either sign); per channel one byte b: b 2^e (or int8(b) 2^e), so zero
 //              texels, constant textures and ranges up to 255 2^60 all occur (no overflow of T)
-//   sidedness, budget (0..64: 0 is taken as 1) and tolerance (0, or 2^-24 .. 2^7)
+//   options    sidedness, which cell integration and which shading method (one byte), budget
+//              (0..64: 0 is taken as 1) and tolerance (0, or 2^-24 .. 2^7)
 // Checks, in float and double:
 //   - integrate_textured_cells with the fuzzed lobe (M^-1 through the checked factory, the
 //     clamped cosine itself where it is rejected), budget and tolerance: value finite and, for a
 //     non-negative texture, >= 0 per channel; error_bound finite and >= 0; 1 <= cells <=
 //     max(budget, 1) and cells <= w h (a leaf holds at least one texel); integrals >= 1.
-//   - the same with budget w h and tolerance 0 (full refinement): every leaf is exact (level 0,
-//     range 0 or I_D 0), so error_bound is exactly 0.
-//   - integrate_textured_quad (the paper's fetch) and shade_textured_quad_light with each
-//     textured_method (exact_cells with the fuzzed budget and tolerance): finite, and >= 0 per
-//     channel for a non-negative texture (F0 and albedo are).
+//   - or (a fuzzed bit) the same with budget w h and tolerance 0 (full refinement): every leaf is
+//     exact (level 0, range 0 or I_D 0), so error_bound is exactly 0.
+//   - integrate_textured_quad (the paper's fetch) and shade_textured_quad_light with one
+//     textured_method (fuzzed; exact_cells with the fuzzed budget and tolerance): finite, and >= 0
+//     per channel for a non-negative texture (F0 and albedo are).
 #pragma once
 
 #include "fuzz_common.hpp"
@@ -101,23 +102,30 @@ void check_textured(FuzzedDataProvider& in, const glm::mat<3, 3, T>& m, const st
     const unsigned tol = in.ConsumeIntegral<std::uint8_t>();
     budget.tolerance = tol < 128u ? 0.0 : std::ldexp(1.0, int(tol & 31u) - 24);
 
+    // One of the two cell integrations and one shading method per input (opts' bits 1 to 3): over a
+    // run they cover all, at less cost per input than running them all.
     const auto& cells = tex.cells();
-    check_cells_result(ltc::integrate_textured_cells(d, quad, cells, side, budget), budget.max_cells, non_negative, w,
-                       h, "integrate_textured_cells");
-    ltc::cell_budget full;
-    full.max_cells = std::size_t(w) * std::size_t(h);
-    const auto r_full = ltc::integrate_textured_cells(d, quad, cells, side, full);
-    check_cells_result(r_full, full.max_cells, non_negative, w, h, "integrate_textured_cells (full refinement)");
-    if (r_full.error_bound != T(0))
-        textured_failure("non-zero error bound after full refinement", "integrate_textured_cells", w, h,
-                         static_cast<double>(r_full.error_bound));
+    if ((opts & 2u) == 0u) {
+        check_cells_result(ltc::integrate_textured_cells(d, quad, cells, side, budget), budget.max_cells, non_negative,
+                           w, h, "integrate_textured_cells");
+    } else {
+        ltc::cell_budget full;
+        full.max_cells = std::size_t(w) * std::size_t(h);
+        const auto r_full = ltc::integrate_textured_cells(d, quad, cells, side, full);
+        check_cells_result(r_full, full.max_cells, non_negative, w, h, "integrate_textured_cells (full refinement)");
+        if (r_full.error_bound != T(0))
+            textured_failure("non-zero error bound after full refinement", "integrate_textured_cells", w, h,
+                             static_cast<double>(r_full.error_bound));
+    }
 
     const vec3 fetched = ltc::integrate_textured_quad(d, quad, tex, side);
     require_finite(fetched, "integrate_textured_quad (fetch)");
     if (non_negative) require_non_negative(fetched, "integrate_textured_quad (fetch)", w, h);
 
-    for (const auto method : {ltc::textured_method::fetch, ltc::textured_method::quick_cells,
-                              ltc::textured_method::exact_cells}) {
+    constexpr ltc::textured_method methods[] = {ltc::textured_method::fetch, ltc::textured_method::quick_cells,
+                                                ltc::textured_method::exact_cells};
+    {
+        const auto method = methods[((opts >> 2) & 3u) % 3u];
         ltc::textured_policy policy;
         policy.method = method;
         policy.budget = budget;
