@@ -45,7 +45,6 @@
 #include <ltc/shading/batch_soa.hpp>  // matrices, polygon_soa, quad_soa, ngon_soa
 
 #include <cstddef>
-#include <iterator>
 
 LTC_NAMESPACE_BEGIN
 namespace batch {
@@ -82,7 +81,7 @@ inline bool available(isa which) {
 /// one that is (automatic: the widest available).
 inline isa resolve(isa which) {
     if (which == isa::automatic) which = isa::avx512;
-    for (std::size_t k = std::size(instruction_sets); k-- > 0;)
+    for (std::size_t k = sizeof(instruction_sets) / sizeof(instruction_sets[0]); k-- > 0;)
         if (instruction_sets[k] == which) {
             while (!available(instruction_sets[k])) --k;  // scalar is always available
             return instruction_sets[k];

@@ -2,6 +2,12 @@
 // vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, bits, gather),
 // and the run-time choice between instruction sets.
 //
+// Those primitives call the compiler's x86 builtins (`__builtin_ia32_*`, which GCC's and Clang's
+// <immintrin.h> intrinsics are defined with, compiling to the same instructions) and generic
+// vector operations (`__builtin_convertvector`), so that no intrinsic header is included: the
+// builtins need no declaration. Where GCC and Clang name a builtin differently, `__clang__`
+// chooses.
+//
 // The layer is the compiler's own vector extension (GCC and Clang: `vector_size`), the one that
 // libstdc++'s <experimental/simd> is written in. Why not that, xsimd or Highway: the batch must
 // run at AVX2 width in a build without -march (run-time dispatch) from headers alone.
@@ -35,7 +41,6 @@
 #if LTC_SIMD && defined(__x86_64__)
 #define LTC_SIMD_AVX2 1
 #define LTC_SIMD_AVX512 1
-#include <immintrin.h>
 #else
 #define LTC_SIMD_AVX2 0
 #define LTC_SIMD_AVX512 0
@@ -81,6 +86,23 @@ struct vector_types<double, Bytes> {
     static constexpr std::size_t width = Bytes / sizeof(double);
 };
 
+/// The operand types of the x86 builtins below (GCC's and Clang's __v4sf, __v4di, ... of
+/// <immintrin.h>, which is not included). Casts between vector types of the same size keep the
+/// bits: vector_types<double, 32>::vi (lanes of std::int64_t, which is long) to v4di (long long).
+namespace x86 {
+typedef float v4sf __attribute__((vector_size(16)));
+typedef float v8sf __attribute__((vector_size(32)));
+typedef float v16sf __attribute__((vector_size(64)));
+typedef double v2df __attribute__((vector_size(16)));
+typedef double v4df __attribute__((vector_size(32)));
+typedef double v8df __attribute__((vector_size(64)));
+typedef int v4si __attribute__((vector_size(16)));
+typedef int v8si __attribute__((vector_size(32)));
+typedef int v16si __attribute__((vector_size(64)));
+typedef long long v4di __attribute__((vector_size(32)));
+typedef long long v8di __attribute__((vector_size(64)));
+}  // namespace x86
+
 namespace baseline {
 
 template <typename T>
@@ -93,10 +115,10 @@ template <typename V>
 LTC_SIMD_BASELINE_FN V rsqrt(V x) {
 #if defined(__SSE2__)
     if constexpr (sizeof(x[0]) == 4) {
-        const V y = (V)_mm_rsqrt_ps((__m128)x);
+        const V y = (V)__builtin_ia32_rsqrtps((x86::v4sf)x);  // rsqrtps
         return y * (1.5f - (0.5f * x) * (y * y));
     } else {
-        return 1.0 / (V)_mm_sqrt_pd((__m128d)x);
+        return 1.0 / (V)__builtin_ia32_sqrtpd((x86::v2df)x);  // sqrtpd
     }
 #else
     V r;
@@ -110,7 +132,7 @@ LTC_SIMD_BASELINE_FN V rsqrt(V x) {
 template <typename V>
 LTC_SIMD_BASELINE_FN V rcp_estimate(V x) {
 #if defined(__SSE2__)
-    if constexpr (sizeof(x[0]) == 4) return (V)_mm_rcp_ps((__m128)x);
+    if constexpr (sizeof(x[0]) == 4) return (V)__builtin_ia32_rcpps((x86::v4sf)x);  // rcpps
 #endif
     return 1 / x;
 }
@@ -119,8 +141,8 @@ LTC_SIMD_BASELINE_FN V rcp_estimate(V x) {
 template <typename V>
 LTC_SIMD_BASELINE_FN V sqrt(V x) {
 #if defined(__SSE2__)
-    if constexpr (sizeof(x[0]) == 4) return (V)_mm_sqrt_ps((__m128)x);
-    else return (V)_mm_sqrt_pd((__m128d)x);
+    if constexpr (sizeof(x[0]) == 4) return (V)__builtin_ia32_sqrtps((x86::v4sf)x);  // sqrtps
+    else return (V)__builtin_ia32_sqrtpd((x86::v2df)x);                            // sqrtpd
 #else
     V r;
     for (std::size_t k = 0; k < sizeof(V) / sizeof(x[0]); ++k) r[k] = std::sqrt(x[k]);
@@ -132,8 +154,8 @@ LTC_SIMD_BASELINE_FN V sqrt(V x) {
 template <typename VI>
 LTC_SIMD_BASELINE_FN unsigned bits(VI m) {
 #if defined(__SSE2__)
-    if constexpr (sizeof(m[0]) == 4) return unsigned(_mm_movemask_ps((__m128)m));
-    else return unsigned(_mm_movemask_pd((__m128d)m));
+    if constexpr (sizeof(m[0]) == 4) return unsigned(__builtin_ia32_movmskps((x86::v4sf)m));  // movmskps
+    else return unsigned(__builtin_ia32_movmskpd((x86::v2df)m));                            // movmskpd
 #else
     unsigned b = 0;
     for (std::size_t k = 0; k < sizeof(VI) / sizeof(m[0]); ++k) b |= (m[k] ? 1u : 0u) << k;
@@ -167,29 +189,29 @@ using types = vector_types<T, 32>;
 template <typename V>
 LTC_SIMD_AVX2_FN V rsqrt(V x) {
     if constexpr (sizeof(x[0]) == 4) {
-        const V y = (V)_mm256_rsqrt_ps((__m256)x);
+        const V y = (V)__builtin_ia32_rsqrtps256((x86::v8sf)x);  // vrsqrtps ymm
         return y * (1.5f - (0.5f * x) * (y * y));
     } else {
-        return 1.0 / (V)_mm256_sqrt_pd((__m256d)x);
+        return 1.0 / (V)__builtin_ia32_sqrtpd256((x86::v4df)x);  // vsqrtpd ymm
     }
 }
 
 template <typename V>
 LTC_SIMD_AVX2_FN V rcp_estimate(V x) {
-    if constexpr (sizeof(x[0]) == 4) return (V)_mm256_rcp_ps((__m256)x);
+    if constexpr (sizeof(x[0]) == 4) return (V)__builtin_ia32_rcpps256((x86::v8sf)x);  // vrcpps ymm
     return 1 / x;
 }
 
 template <typename V>
 LTC_SIMD_AVX2_FN V sqrt(V x) {
-    if constexpr (sizeof(x[0]) == 4) return (V)_mm256_sqrt_ps((__m256)x);
-    else return (V)_mm256_sqrt_pd((__m256d)x);
+    if constexpr (sizeof(x[0]) == 4) return (V)__builtin_ia32_sqrtps256((x86::v8sf)x);  // vsqrtps ymm
+    else return (V)__builtin_ia32_sqrtpd256((x86::v4df)x);                            // vsqrtpd ymm
 }
 
 template <typename VI>
 LTC_SIMD_AVX2_FN unsigned bits(VI m) {
-    if constexpr (sizeof(m[0]) == 4) return unsigned(_mm256_movemask_ps((__m256)m));
-    else return unsigned(_mm256_movemask_pd((__m256d)m));
+    if constexpr (sizeof(m[0]) == 4) return unsigned(__builtin_ia32_movmskps256((x86::v8sf)m));  // vmovmskps ymm
+    else return unsigned(__builtin_ia32_movmskpd256((x86::v4df)m));                            // vmovmskpd ymm
 }
 
 template <typename VI>
@@ -197,13 +219,29 @@ LTC_SIMD_AVX2_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
-/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened).
+/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened by vcvtps2pd). The
+/// builtins take a source (zero), the base, the indices, a mask (every lane: its sign bit set)
+/// and the scale, a constant.
 template <typename V, typename VI>
 LTC_SIMD_AVX2_FN V gather(const float* base, VI index) {
-    if constexpr (sizeof(V) / sizeof(index[0]) == 8)
-        return (V)_mm256_i32gather_ps(base, (__m256i)index, 4);
-    else
-        return (V)_mm256_cvtps_pd(_mm256_i64gather_ps(base, (__m256i)index, 4));
+    if constexpr (sizeof(V) / sizeof(index[0]) == 8) {
+        const x86::v8sf every = (x86::v8sf)~x86::v8si{};
+#if defined(__clang__)
+        return (V)__builtin_ia32_gatherd_ps256(x86::v8sf{}, base, (x86::v8si)index, every, 4);
+#else
+        return (V)__builtin_ia32_gathersiv8sf(x86::v8sf{}, base, (x86::v8si)index, every, 4);
+#endif
+    } else {
+        const x86::v4sf every = (x86::v4sf)~x86::v4si{};
+#if defined(__clang__)
+        const x86::v4sf f = __builtin_ia32_gatherq_ps256(x86::v4sf{}, base, (x86::v4di)index, every, 4);
+        return __builtin_convertvector(f, V);
+#else
+        // GCC 12 lowers __builtin_convertvector here to two 128-bit conversions.
+        const x86::v4sf f = __builtin_ia32_gatherdiv4sf256(x86::v4sf{}, base, (x86::v4di)index, every, 4);
+        return (V)__builtin_ia32_cvtps2pd256(f);
+#endif
+    }
 }
 
 /// Whether this CPU runs the AVX2 kernel (AVX2 and FMA), checked once at run time in every build
@@ -225,35 +263,59 @@ namespace avx512 {
 template <typename T>
 using types = vector_types<T, 64>;
 
-/// float: the AVX-512 estimate (relative error <= 2^-14) and one Newton step, as in baseline.
-/// (The masked forms: GCC 12 warns that the unmasked ones read an uninitialized register.)
+// The masks of the builtins' masked forms (__mmask16, __mmask8) that select every lane.
+inline constexpr unsigned short every16 = 0xffff;
+inline constexpr unsigned char every8 = 0xff;
+// The rounding argument of the 512-bit builtins: the current rounding mode (MXCSR), as in the
+// instructions without embedded rounding (_MM_FROUND_CUR_DIRECTION).
+inline constexpr int current_rounding = 4;
+
+/// Correctly rounded sqrt of the 512-bit vector x (vsqrtps zmm, vsqrtpd zmm): GCC's builtin has a
+/// source and a mask (every lane), Clang's not.
+LTC_SIMD_AVX512_FN x86::v16sf sqrt_lanes(x86::v16sf x) {
+#if defined(__clang__)
+    return __builtin_ia32_sqrtps512(x, current_rounding);
+#else
+    return __builtin_ia32_sqrtps512_mask(x, x86::v16sf{}, every16, current_rounding);
+#endif
+}
+LTC_SIMD_AVX512_FN x86::v8df sqrt_lanes(x86::v8df x) {
+#if defined(__clang__)
+    return __builtin_ia32_sqrtpd512(x, current_rounding);
+#else
+    return __builtin_ia32_sqrtpd512_mask(x, x86::v8df{}, every8, current_rounding);
+#endif
+}
+
+/// float: the AVX-512 estimate (vrsqrt14ps, relative error <= 2^-14) and one Newton step, as in
+/// baseline. (The builtin is the masked form: source zero, every lane.)
 template <typename V>
 LTC_SIMD_AVX512_FN V rsqrt(V x) {
     if constexpr (sizeof(x[0]) == 4) {
-        const V y = (V)_mm512_maskz_rsqrt14_ps(__mmask16(0xffff), (__m512)x);
+        const V y = (V)__builtin_ia32_rsqrt14ps512_mask((x86::v16sf)x, x86::v16sf{}, every16);
         return y * (1.5f - (0.5f * x) * (y * y));
     } else {
-        return 1.0 / (V)_mm512_maskz_sqrt_pd(__mmask8(0xff), (__m512d)x);
+        return 1.0 / (V)sqrt_lanes((x86::v8df)x);
     }
 }
 
-/// Within 2^-14 of 1 / x (float), or 1 / x itself.
+/// Within 2^-14 of 1 / x (float: vrcp14ps, the masked builtin as in rsqrt), or 1 / x itself.
 template <typename V>
 LTC_SIMD_AVX512_FN V rcp_estimate(V x) {
-    if constexpr (sizeof(x[0]) == 4) return (V)_mm512_maskz_rcp14_ps(__mmask16(0xffff), (__m512)x);
+    if constexpr (sizeof(x[0]) == 4) return (V)__builtin_ia32_rcp14ps512_mask((x86::v16sf)x, x86::v16sf{}, every16);
     return 1 / x;
 }
 
 template <typename V>
 LTC_SIMD_AVX512_FN V sqrt(V x) {
-    if constexpr (sizeof(x[0]) == 4) return (V)_mm512_maskz_sqrt_ps(__mmask16(0xffff), (__m512)x);
-    else return (V)_mm512_maskz_sqrt_pd(__mmask8(0xff), (__m512d)x);
+    if constexpr (sizeof(x[0]) == 4) return (V)sqrt_lanes((x86::v16sf)x);
+    else return (V)sqrt_lanes((x86::v8df)x);
 }
 
 template <typename VI>
 LTC_SIMD_AVX512_FN unsigned bits(VI m) {
-    if constexpr (sizeof(m[0]) == 4) return unsigned(_mm512_movepi32_mask((__m512i)m));
-    else return unsigned(_mm512_movepi64_mask((__m512i)m));
+    if constexpr (sizeof(m[0]) == 4) return unsigned(__builtin_ia32_cvtd2mask512((x86::v16si)m));  // vpmovd2m
+    else return unsigned(__builtin_ia32_cvtq2mask512((x86::v8di)m));                            // vpmovq2m
 }
 
 template <typename VI>
@@ -261,16 +323,21 @@ LTC_SIMD_AVX512_FN bool all(VI m) {
     return bits(m) == (1u << (sizeof(VI) / sizeof(m[0]))) - 1;
 }
 
-/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened). The masked forms
-/// with a zero source: GCC 12's unmasked ones start from an undefined register
-/// (_mm512_undefined_ps), which it then warns of as uninitialized.
+/// Lane k: base[index[k]] (vgatherdps; double lanes: vgatherqps, then widened by vcvtps2pd). The
+/// builtins (GCC's and Clang's alike) take a source (zero), the base, the indices, a mask (every
+/// lane) and the scale, a constant.
 template <typename V, typename VI>
 LTC_SIMD_AVX512_FN V gather(const float* base, VI index) {
     if constexpr (sizeof(V) / sizeof(index[0]) == 16) {
-        return (V)_mm512_mask_i32gather_ps(_mm512_setzero_ps(), __mmask16(0xffff), (__m512i)index, base, 4);
+        return (V)__builtin_ia32_gathersiv16sf(x86::v16sf{}, base, (x86::v16si)index, every16, 4);
     } else {
-        return (V)_mm512_maskz_cvtps_pd(
-            __mmask8(0xff), _mm512_mask_i64gather_ps(_mm256_setzero_ps(), __mmask8(0xff), (__m512i)index, base, 4));
+        const x86::v8sf f = __builtin_ia32_gatherdiv16sf(x86::v8sf{}, base, (x86::v8di)index, every8, 4);
+#if defined(__clang__)
+        return __builtin_convertvector(f, V);
+#else
+        // GCC 12 lowers __builtin_convertvector here to two 256-bit conversions.
+        return (V)__builtin_ia32_cvtps2pd512_mask(f, x86::v8df{}, every8, current_rounding);
+#endif
     }
 }
 
