@@ -14,6 +14,9 @@
 // diffuse = albedo radiance E then differ by the factor times the integral's tolerance, plus the
 // factor's 4 u relative rounding (the same operations on both sides, up to FMA contraction).
 // Points the kernel hands back, and the tail, are shaded by the scalar function: equal exactly.
+// In double (the kernel on double lanes against the scalar shading in double) the same
+// derivation holds with double's u = 2^-53 (the kernel normalizes by 1 / sqrt there, closer than
+// float's estimate and Newton step).
 #include "support/batch_lanes.hpp"
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"
@@ -31,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -38,10 +42,17 @@ namespace {
 using Policy = ltc::edge_policy::minimax_rational;
 constexpr double kU = 0x1.0p-24;
 
-// count random shading points in SoA (P near the origin, N and V random, V mostly in front).
-struct points_soa {
-    std::vector<float> a[16];  // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb
-    explicit points_soa(std::size_t count, std::uint64_t seed) {
+// The unit roundoff of T (kU for float).
+template <typename T>
+constexpr double unit_roundoff = std::numeric_limits<T>::epsilon() / 2;
+
+// count random shading points in SoA (P near the origin, N and V random, V mostly in front),
+// rounded to float (then widened exactly for T = double: the same points in both).
+template <typename T>
+struct points_soa_of {
+    using vec3 = glm::vec<3, T>;
+    std::vector<T> a[16];  // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb
+    explicit points_soa_of(std::size_t count, std::uint64_t seed) {
         ltc_test::rng g(seed);
         for (std::size_t i = 0; i < count; ++i) {
             const glm::dvec3 P(g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-0.5, 0.5));
@@ -51,40 +62,48 @@ struct points_soa {
             if (i % 101 == 0) V = N;                        // normal incidence exactly
             const double v[16] = {P.x, P.y, P.z, N.x, N.y, N.z, V.x, V.y, V.z, g.uniform(0.02, 1.0),
                                   g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform()};
-            for (int k = 0; k < 16; ++k) a[k].push_back(float(v[k]));
+            for (int k = 0; k < 16; ++k) a[k].push_back(T(float(v[k])));
         }
     }
-    glm::vec3 vec(int c, std::size_t i) const { return glm::vec3(a[c][i], a[c + 1][i], a[c + 2][i]); }
-    ltc::batch::shading_points<float> view() const {
-        const float* c[16];
+    vec3 vec(int c, std::size_t i) const { return vec3(a[c][i], a[c + 1][i], a[c + 2][i]); }
+    ltc::batch::shading_points<T> view() const {
+        const T* c[16];
         for (int k = 0; k < 16; ++k) c[k] = a[k].data();
-        return ltc::batch::shading_points<float>::from_columns(c);
+        return ltc::batch::shading_points<T>::from_columns(c);
     }
 };
 
-struct results_soa {
-    std::vector<float> c[6];
-    explicit results_soa(std::size_t count) {
-        for (auto& v : c) v.assign(count, -1.0f);
+using points_soa = points_soa_of<float>;
+
+template <typename T>
+struct results_soa_of {
+    std::vector<T> c[6];
+    explicit results_soa_of(std::size_t count) {
+        for (auto& v : c) v.assign(count, T(-1));
     }
-    ltc::batch::shading_results<float> view() {
-        ltc::batch::shading_results<float> r;
+    ltc::batch::shading_results<T> view() {
+        ltc::batch::shading_results<T> r;
         for (int k = 0; k < 3; ++k) r.specular[k] = c[k].data(), r.diffuse[k] = c[3 + k].data();
         return r;
     }
-    ltc::polygon_light_result<float> at(std::size_t i) const {
-        ltc::polygon_light_result<float> r;
+    ltc::polygon_light_result<T> at(std::size_t i) const {
+        ltc::polygon_light_result<T> r;
         for (int k = 0; k < 3; ++k) r.specular[k] = c[k][i], r.diffuse[k] = c[3 + k][i];
         return r;
     }
 };
+using results_soa = results_soa_of<float>;
 
-// The tolerance of the file comment for a point shaded in `frame` with `lobe`.
-ltc::polygon_light_result<double> tolerance(const ltc::shading_frame<float>& frame, const ltc::ltc_coefficients<float>& lobe,
-                                            const glm::vec3& P, const glm::vec3& F0, const glm::vec3& albedo,
-                                            const glm::vec3& radiance, const std::vector<glm::vec3>& light,
-                                            const ltc::polygon_light_result<float>& value) {
-    std::vector<glm::vec3> local;
+// The tolerance of the file comment for a point shaded in `frame` with `lobe`, u the unit
+// roundoff of T.
+template <typename T>
+ltc::polygon_light_result<double> tolerance(const ltc::shading_frame<T>& frame, const ltc::ltc_coefficients<T>& lobe,
+                                            const glm::vec<3, T>& P, const glm::vec<3, T>& F0,
+                                            const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
+                                            const std::vector<glm::vec<3, T>>& light,
+                                            const ltc::polygon_light_result<T>& value) {
+    constexpr double u = unit_roundoff<T>;
+    std::vector<glm::vec<3, T>> local;
     for (const auto& p : light) local.push_back(frame.to_local(p - P));
     // The two paths compute the local vertices differently: each component within 4 u |p - P| of
     // the exact one on either side (the subtraction, or the scalar path's division by the largest
@@ -102,20 +121,21 @@ ltc::polygon_light_result<double> tolerance(const ltc::shading_frame<float>& fra
         d_e.push_back(8 * std::sqrt(3.0));
         d_i.push_back(8 * std::sqrt(3.0) * glm::length(abs_m * glm::abs(ld)) / glm::length(ql));
     }
-    const double tol_e = ltc_test::clip_tolerance<Policy>(glm::mat3(1.0f), local) +
-                         kU * rounding_parts(form::cosine, q_e, d_e, 0).region / (2 * ltc_test::kPi);
+    const double tol_e = ltc_test::clip_tolerance<Policy>(glm::mat<3, 3, T>(T(1)), local) +
+                         u * rounding_parts(form::cosine, q_e, d_e, 0).region / (2 * ltc_test::kPi);
     const double tol_i = ltc_test::clip_tolerance<Policy>(lobe.m_inv, local) +
-                         kU * rounding_parts(form::cosine, q_i, d_i, 0).region / (2 * ltc_test::kPi);
+                         u * rounding_parts(form::cosine, q_i, d_i, 0).region / (2 * ltc_test::kPi);
     ltc::polygon_light_result<double> t;
     for (int c = 0; c < 3; ++c) {
         const double brdf = std::abs(double(F0[c]) * lobe.magnitude + (1 - double(F0[c])) * lobe.fresnel);
-        t.specular[c] = double(radiance[c]) * brdf * tol_i + 4 * kU * std::abs(value.specular[c]);
-        t.diffuse[c] = double(albedo[c]) * double(radiance[c]) * tol_e + 4 * kU * std::abs(value.diffuse[c]);
+        t.specular[c] = double(radiance[c]) * brdf * tol_i + 4 * u * std::abs(value.specular[c]);
+        t.diffuse[c] = double(albedo[c]) * double(radiance[c]) * tol_e + 4 * u * std::abs(value.diffuse[c]);
     }
     return t;
 }
 
-std::size_t violations(const ltc::polygon_light_result<float>& got, const ltc::polygon_light_result<float>& want,
+template <typename T>
+std::size_t violations(const ltc::polygon_light_result<T>& got, const ltc::polygon_light_result<T>& want,
                        const ltc::polygon_light_result<double>& tol) {
     std::size_t v = 0;
     for (int c = 0; c < 3; ++c) {
@@ -138,25 +158,28 @@ namespace {
 // cosine (batch::shade_polygon_light_cosine_lobe; tables its lobe tables): lobe 1's reference is
 // the LTC of M^-1 = I, whose integral is the form factor bit for bit (tests/test_cosine_lobe.cpp),
 // lobe 2's the lookup with its premultiplied M^-1 divided out (ggx_cosine_lobe::unpremultiplied).
-template <int Lobes, bool Cosine = false>
+template <int Lobes, bool Cosine = false, typename T = float>
 void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool ggx) {
+    using vec3 = glm::vec<3, T>;
+    constexpr double u = unit_roundoff<T>;
     const std::size_t count = 1031;  // not a multiple of any width: the tail runs
-    const points_soa pts(count, 12);
+    const points_soa_of<T> pts(count, 12);
     ltc_test::rng g(13);
-    const glm::vec3 radiance(3.0f, 2.0f, 1.0f);
+    const vec3 radiance(3, 2, 1);
     for (const std::size_t n : {3u, 4u, 5u, 7u, 18u})  // 18: the light beyond the stack buffer
         for (const auto side : {ltc::sidedness::one_sided, ltc::sidedness::two_sided})
             for (const auto isa : ltc::batch::instruction_sets) {
                 if (isa == ltc::batch::isa::scalar) continue;
                 if (!ltc::batch::available(isa)) continue;
-                const auto light = ltc_test::random_polygon(g, n, true, n % 2 == 0);
+                std::vector<vec3> light;
+                for (const auto& p : ltc_test::random_polygon(g, n, true, n % 2 == 0)) light.push_back(vec3(p));
                 // The kernel alone (NaN where it hands a point back), then the public function.
-                std::vector<float> lx, ly, lz;
+                std::vector<T> lx, ly, lz;
                 for (const auto& p : light) lx.push_back(p.x), ly.push_back(p.y), lz.push_back(p.z);
-                const ltc::batch::detail::shading_light<float> sl{lx.data(), ly.data(), lz.data(), n,
-                                                                  {radiance.x, radiance.y, radiance.z},
-                                                                  side == ltc::sidedness::two_sided};
-                results_soa kernel(count), out(count);
+                const ltc::batch::detail::shading_light<T> sl{lx.data(), ly.data(), lz.data(), n,
+                                                              {radiance.x, radiance.y, radiance.z},
+                                                              side == ltc::sidedness::two_sided};
+                results_soa_of<T> kernel(count), out(count);
                 const std::size_t vectorized =
                     ltc_test::shading_kernel<Policy, Lobes, Cosine>(isa, sl, pts.view(), kernel.view(), count, tables);
                 if (Cosine)
@@ -171,18 +194,18 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                 else
                     ltc::batch::shade_polygon_light_with_table<Policy>(*tables[0], pts.view(), radiance, light.data(), n,
                                                                        side, out.view(), count, isa);
-                std::vector<float> stage_in[7];
+                std::vector<T> stage_in[7];
                 for (int k = 0; k < 7; ++k) stage_in[k] = pts.a[3 + k];
-                ltc_test::lane_stage_results stages[Lobes];
+                ltc_test::lane_stage_results_of<T> stages[Lobes];
                 for (int l = 0; l < Lobes; ++l) ltc_test::lane_stages(isa, stage_in, stages[l], count, *tables[l]);
                 std::size_t bad = 0, handed_back = 0, crossing = 0;
                 for (std::size_t i = 0; i < count; ++i) {
-                    const glm::vec3 P = pts.vec(0, i), F0 = pts.vec(10, i), albedo = pts.vec(13, i);
+                    const vec3 P = pts.vec(0, i), F0 = pts.vec(10, i), albedo = pts.vec(13, i);
                     const auto got = out.at(i);
                     if (i >= vectorized || std::isnan(kernel.c[0][i])) {
                         handed_back += i < vectorized;
                         const auto scalar_frame = ltc::make_shading_frame(pts.vec(3, i), pts.vec(6, i));
-                        const float c = scalar_frame.cos_theta_v, r = pts.a[9][i];
+                        const T c = scalar_frame.cos_theta_v, r = pts.a[9][i];
                         const auto want =
                             Cosine ? ltc::shade_polygon_light_cosine_lobe<Policy>(scalar_frame, ltc::ggx_cosine_lobe::fetch(c, r),
                                                                                  P, F0, albedo, radiance, light.data(), n, side)
@@ -194,21 +217,21 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                         CHECK(got.diffuse == want.diffuse);
                         continue;
                     }
-                    ltc::shading_frame<float> frame;
+                    ltc::shading_frame<T> frame;
                     const auto& st = stages[0];
-                    frame.t1 = glm::vec3(st.frame[0][i], st.frame[1][i], st.frame[2][i]);
-                    frame.t2 = glm::vec3(st.frame[3][i], st.frame[4][i], st.frame[5][i]);
-                    frame.n = glm::vec3(st.frame[6][i], st.frame[7][i], st.frame[8][i]);
+                    frame.t1 = vec3(st.frame[0][i], st.frame[1][i], st.frame[2][i]);
+                    frame.t2 = vec3(st.frame[3][i], st.frame[4][i], st.frame[5][i]);
+                    frame.n = vec3(st.frame[6][i], st.frame[7][i], st.frame[8][i]);
                     frame.cos_theta_v = st.frame[9][i];
-                    ltc::polygon_light_result<float> want;
+                    ltc::polygon_light_result<T> want;
                     ltc::polygon_light_result<double> tol;
                     for (int l = 0; l < Lobes; ++l) {
-                        ltc::ltc_coefficients<float> lobe;
-                        lobe.m_inv = glm::mat3(0.0f);
+                        ltc::ltc_coefficients<T> lobe;
+                        lobe.m_inv = glm::mat<3, 3, T>(T(0));
                         lobe.m_inv[0][0] = stages[l].channel[0][i], lobe.m_inv[0][2] = stages[l].channel[1][i];
                         lobe.m_inv[2][0] = stages[l].channel[2][i], lobe.m_inv[2][2] = stages[l].channel[3][i];
-                        lobe.m_inv[1][1] = 1.0f;
-                        if (Cosine && l == 0) lobe.m_inv = glm::mat3(1.0f);  // the cosine: E
+                        lobe.m_inv[1][1] = T(1);
+                        if (Cosine && l == 0) lobe.m_inv = glm::mat<3, 3, T>(T(1));  // the cosine: E
                         lobe.magnitude = stages[l].channel[4][i], lobe.fresnel = stages[l].channel[5][i];
                         if (Cosine && l == 1) lobe = ltc::ggx_cosine_lobe::unpremultiplied(lobe);  // the kernel's division
                         const auto one =
@@ -219,7 +242,7 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                         } else {
                             want.specular += one.specular;
                             // Both sides round the sum once: 2 u of it.
-                            tol.specular += t.specular + 2 * kU * glm::abs(glm::dvec3(want.specular));
+                            tol.specular += t.specular + 2 * u * glm::abs(glm::dvec3(want.specular));
                         }
                     }
                     const std::size_t v = violations(got, want, tol);
@@ -229,7 +252,7 @@ void check_lights_over_points(const ltc::ltc_table* const (&tables)[Lobes], bool
                     bad += v;
                     bool above = false, below = false;
                     for (const auto& p : light) {
-                        const float z = frame.to_local(p - P).z;
+                        const T z = frame.to_local(p - P).z;
                         above = above || z >= 0, below = below || z < 0;
                     }
                     crossing += above && below;
@@ -269,6 +292,38 @@ TEST_CASE("LTC-and-cosine batch shading matches shade_polygon_light_cosine_lobe 
     const ltc::ltc_table cosine = ltc::ggx_cosine_lobe::lobe_table(0), lobe = ltc::ggx_cosine_lobe::lobe_table(1);
     const ltc::ltc_table* const tables[2] = {&cosine, &lobe};
     check_lights_over_points<2, true>(tables, false);
+}
+
+TEST_CASE("double batch shading (one lobe, two lobes, the LTC and the cosine) matches the double scalar shading",
+          "[batch][shading][double]") {
+    // The kernel on double lanes, every instruction set (the 16-byte one holds two: GCC 12 at -O2
+    // once failed to compile its sign flip, an internal compiler error), against the scalar
+    // shading in double with the kernel's frame and coefficients: the float tests' tolerance
+    // with double's u.
+    const ltc::ltc_table* const one[1] = {&ltc::ggx::table};
+    check_lights_over_points<1, false, double>(one, true);
+    const ltc::ltc_table lobe_1 = ltc::ggx_two_lobe::lobe_table(0), lobe_2 = ltc::ggx_two_lobe::lobe_table(1);
+    const ltc::ltc_table* const two[2] = {&lobe_1, &lobe_2};
+    check_lights_over_points<2, false, double>(two, false);
+    const ltc::ltc_table cosine = ltc::ggx_cosine_lobe::lobe_table(0), lobe = ltc::ggx_cosine_lobe::lobe_table(1);
+    const ltc::ltc_table* const with_cosine[2] = {&cosine, &lobe};
+    check_lights_over_points<2, true, double>(with_cosine, false);
+    // The default, batch::shade_polygon_light, is the LTC and the cosine in double too.
+    const std::size_t count = 67;
+    const points_soa_of<double> pts(count, 23);
+    ltc_test::rng g(29);
+    std::vector<glm::dvec3> light;
+    for (const auto& p : ltc_test::random_polygon(g, 5, true, false)) light.push_back(glm::dvec3(p));
+    for (const auto isa : ltc::batch::instruction_sets) {
+        if (!ltc::batch::available(isa)) continue;
+        results_soa_of<double> a(count), b(count);
+        ltc::batch::shade_polygon_light<Policy>(pts.view(), glm::dvec3(2, 1, 0.5), light.data(), 5,
+                                                ltc::sidedness::one_sided, a.view(), count, isa);
+        ltc::batch::shade_polygon_light_cosine_lobe<Policy>(pts.view(), glm::dvec3(2, 1, 0.5), light.data(), 5,
+                                                            ltc::sidedness::one_sided, b.view(), count, isa);
+        CAPTURE(static_cast<int>(isa));
+        for (int k = 0; k < 6; ++k) CHECK(a.c[k] == b.c[k]);
+    }
 }
 
 TEST_CASE("batch shading kernel: lobe tables of different sizes, each at its own position", "[batch][shading][two_lobe]") {

@@ -7,30 +7,34 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace ltc_test {
 
 /// Inputs: N (3 arrays), V (3 arrays), roughness. Outputs per point: t1, t2, n (9 arrays),
-/// cos_theta_v, the 6 table channels, and whether the frame hands the point back.
-struct lane_stage_results {
-    std::vector<float> frame[10];  // t1 xyz, t2 xyz, n xyz, cos_theta_v
-    std::vector<float> channel[6];
-    std::vector<std::int32_t> fallback;
+/// cos_theta_v, the 6 table channels, and whether the frame hands the point back (all bits set).
+template <typename T>
+struct lane_stage_results_of {
+    std::vector<T> frame[10];  // t1 xyz, t2 xyz, n xyz, cos_theta_v
+    std::vector<T> channel[6];
+    std::vector<std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>> fallback;  // a lane's width
 };
+using lane_stage_results = lane_stage_results_of<float>;
 
 #define LTC_TEST_LANE_STAGES(ns, attributes)                                                                       \
-    attributes inline void lane_stages_##ns(const std::vector<float> (&in)[7], lane_stage_results& out,           \
+    template <typename T>                                                                                          \
+    attributes inline void lane_stages_##ns(const std::vector<T> (&in)[7], lane_stage_results_of<T>& out,         \
                                             std::size_t count, const ltc::ltc_table& table) {                      \
         using namespace ltc::batch::detail::ns;                                                                    \
-        constexpr std::size_t W = types<float>::width;                                                             \
-        for (auto& v : out.frame) v.assign(count, 0.0f);                                                           \
-        for (auto& v : out.channel) v.assign(count, 0.0f);                                                         \
+        constexpr std::size_t W = types<T>::width;                                                                 \
+        for (auto& v : out.frame) v.assign(count, T(0));                                                           \
+        for (auto& v : out.channel) v.assign(count, T(0));                                                         \
         out.fallback.assign(count, 0);                                                                             \
         for (std::size_t i = 0; i + W <= count; i += W) {                                                          \
-            const lane_frame<float> f({load(&in[0][i]), load(&in[1][i]), load(&in[2][i])},                        \
-                                      {load(&in[3][i]), load(&in[4][i]), load(&in[5][i])});                       \
-            const lane_coefficients<float> c(table, f.cos_theta_v, load(&in[6][i]));                               \
+            const lane_frame<T> f({load(&in[0][i]), load(&in[1][i]), load(&in[2][i])},                            \
+                                  {load(&in[3][i]), load(&in[4][i]), load(&in[5][i])});                           \
+            const lane_coefficients<T> c(table, f.cos_theta_v, load(&in[6][i]));                                   \
             for (int k = 0; k < 3; ++k) {                                                                          \
                 __builtin_memcpy(&out.frame[k][i], &f.t1[k], sizeof f.t1[k]);                                      \
                 __builtin_memcpy(&out.frame[3 + k][i], &f.t2[k], sizeof f.t2[k]);                                  \
@@ -54,8 +58,9 @@ LTC_TEST_LANE_STAGES(avx512, LTC_SIMD_AVX512_TARGET)
 
 /// The lane stages of `which` (baseline, avx2 or avx512; the caller checks ltc::batch::available),
 /// the coefficients from `table` (the GGX table by default).
-inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7], lane_stage_results& out,
-                        std::size_t count, const ltc::ltc_table& table = ltc::ggx::table) {
+template <typename T>
+void lane_stages(ltc::batch::isa which, const std::vector<T> (&in)[7], lane_stage_results_of<T>& out, std::size_t count,
+                 const ltc::ltc_table& table = ltc::ggx::table) {
 #if LTC_SIMD_AVX512
     if (which == ltc::batch::isa::avx512) return lane_stages_avx512(in, out, count, table);
 #endif
@@ -72,10 +77,10 @@ inline void lane_stages(ltc::batch::isa which, const std::vector<float> (&in)[7]
 /// it hands a point back to the scalar function; lobe l's coefficients from tables[l] (with
 /// Cosine, tables[0] the cosine lobe's, integrated as the form factor, tables[1] the LTC's,
 /// premultiplied).
-template <typename Policy, int Lobes, bool Cosine = false>
-std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<float>& light,
-                           const ltc::batch::shading_points<float>& points,
-                           const ltc::batch::shading_results<float>& out, std::size_t count,
+template <typename Policy, int Lobes, bool Cosine = false, typename T>
+std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<T>& light,
+                           const ltc::batch::shading_points<T>& points, const ltc::batch::shading_results<T>& out,
+                           std::size_t count,
                            const ltc::ltc_table* const (&tables)[Lobes]) {
 #if LTC_SIMD_AVX512
     if (which == ltc::batch::isa::avx512)

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -63,9 +64,11 @@ inline double theta_over_sin(const glm::dvec3& a, const glm::dvec3& b) {
     return s > 0 ? std::atan2(s, c) / s : (c > 0 ? 1.0 : 1e30);
 }
 
-// The per-item tolerance derived in the header comment of tests/test_batch.cpp, over the float
+// The per-item tolerance derived in the header comment of tests/test_batch.cpp, over the T
 // scalar path's own clipped edges and terms (what both paths actually sum) and its crossings:
-//   u / (2 pi) * [ sum_j ((32 + 2 m + 8 k_j) |e_j| + 8 (1 + t_j))  +  sum_X 8 kappa_X (2 + t_X) ].
+//   u / (2 pi) * [ sum_j ((32 + 2 m + 8 k_j) |e_j| + 8 (1 + t_j))  +  sum_X 8 kappa_X (2 + t_X) ],
+// u the unit roundoff of T (float: kU; double: 2^-53, where the kernel's normalization is
+// 1 / sqrt, within 1.5 u, so that the float derivation's 4.5 u bounds it).
 // k_j is the conditioning of theta / sin(theta) with respect to c = a.b: 0 for the exact,
 // polynomial and minimax_rational policies (they take the sine from |a x b|, and
 // theta / sin(theta) is flat where they use c), but for rational and fp16_quadratic, which use sqrt(1 - c^2) for c < 0, a change of a
@@ -75,16 +78,17 @@ inline double theta_over_sin(const glm::dvec3& a, const glm::dvec3& b) {
 // by the same operations, so the unit vertices and the terms of unclipped edges are bitwise
 // equal), only the summation order (2 m u |e_j|), the crossings and, for the policies that use
 // c, the change of c at a crossing's edges (8 k_j u |e_j|) remain.
-template <typename Policy>
-double clip_tolerance(const glm::mat3& mi, const std::vector<glm::vec3>& v, bool same_normalization = false) {
+template <typename Policy, typename T>
+double clip_tolerance(const glm::mat<3, 3, T>& mi, const std::vector<glm::vec<3, T>>& v,
+                      bool same_normalization = false) {
     const double m = static_cast<double>(ltc::clipped_capacity(v.size()));
     constexpr bool uses_c = std::is_same_v<Policy, ltc::edge_policy::rational> ||
                             std::is_same_v<Policy, ltc::edge_policy::fp16_quadratic>;
     const double floor = std::is_same_v<Policy, ltc::edge_policy::rational> ? 1e-7 : 1e-4;
     double sum = 0;
-    ltc::detail::for_each_unit_edge<float, true>(
-        ltc::detail::transformed_vertices<float>{mi, v.data()}, v.size(),
-        [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3&) {
+    ltc::detail::for_each_unit_edge<T, true>(
+        ltc::detail::transformed_vertices<T>{mi, v.data()}, v.size(),
+        [&](const glm::vec<3, T>& a, const glm::vec<3, T>& b, const glm::vec<3, T>&) {
             const double c = glm::dot(glm::dvec3(a), glm::dvec3(b));
             const double k = uses_c && c < 0 ? -c / std::max(1 - c * c, floor) : 0.0;
             const double e = std::abs(static_cast<double>(ltc::edge_integral_z<Policy>(a, b)));
@@ -98,7 +102,7 @@ double clip_tolerance(const glm::mat3& mi, const std::vector<glm::vec3>& v, bool
     // Crossings: X = in (-out.z) + out in.z cancels when in and out are nearly opposite (an edge
     // passing close to the shading point); the per-component rounding of the unit vertices (a few
     // u, different in the two paths) then moves X by kappa_X times as much along the horizon.
-    const ltc::detail::transformed_vertices<float> at{mi, v.data()};
+    const ltc::detail::transformed_vertices<T> at{mi, v.data()};
     for (std::size_t k = 0; k < v.size(); ++k) {
         const glm::dvec3 p(at(k == 0 ? v.size() - 1 : k - 1)), q(at(k));
         if ((p.z >= 0) == (q.z >= 0)) continue;
@@ -107,7 +111,7 @@ double clip_tolerance(const glm::mat3& mi, const std::vector<glm::vec3>& v, bool
         const double kappa = (std::abs(in.z) + std::abs(out.z)) / std::max(glm::length(x), 1e-300);
         sum += 8 * kappa * (2 + theta_over_sin(glm::normalize(glm::dvec3(x.x, x.y, 0)), in));
     }
-    return sum * kU / (2 * kPi);
+    return sum * (std::numeric_limits<T>::epsilon() / 2) / (2 * kPi);
 }
 
 }  // namespace ltc_test

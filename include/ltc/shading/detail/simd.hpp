@@ -173,7 +173,7 @@ LTC_SIMD_BASELINE_FN bool all(VI m) {
 /// SSE2 and NEON have no gather instruction: one load per lane.
 template <typename V, typename VI>
 LTC_SIMD_BASELINE_FN V gather(const float* base, VI index) {
-    V r;
+    V r{};
     for (std::size_t k = 0; k < sizeof(V) / sizeof(r[0]); ++k) r[k] = base[index[k]];
     return r;
 }
