@@ -147,9 +147,11 @@ estimate<V> integrate(const F& f, domain d, std::size_t n, const frame& fr = fra
 /// as_double_t<ltc::clamped_cosine<float>> = ltc::clamped_cosine<double>.
 template <typename Dist>
 struct as_double;
-template <template <typename> class DistT, typename T>
-struct as_double<DistT<T>> {
-    using type = DistT<double>;
+// Any further parameters (clamped_cosine's edge policy) carried over: a template template
+// parameter of one type matches them only with GCC's relaxed matching, not Clang's.
+template <template <typename, typename...> class DistT, typename T, typename... Rest>
+struct as_double<DistT<T, Rest...>> {
+    using type = DistT<double, Rest...>;
 };
 template <typename Dist>
 using as_double_t = typename as_double<Dist>::type;
