@@ -14,8 +14,9 @@
 # shapes 14, samplers 18.
 #
 # Environment: CXX (clang++), LTC_FUZZ_HARNESSES (the areas to run, "core shading textured shapes
-# samplers"), LTC_FUZZ_WORK (the scratch folder, kept; default a new temporary one, removed after a
-# clean run), LTC_FUZZ_BUILD_JOBS (harnesses compiled at once, 1). See tests/fuzz/README.md.
+# samplers"), LTC_FUZZ_WORK (the scratch folder, kept; default a new one under /dev/shm, else
+# $TMPDIR or /tmp, removed after a clean run), LTC_FUZZ_BUILD_JOBS (harnesses compiled at once, 1).
+# See tests/fuzz/README.md.
 set -euo pipefail
 
 declare -A share=([core]=18 [shading]=34 [textured]=36 [shapes]=14 [samplers]=18)
@@ -45,7 +46,7 @@ else
   # second at first, and on a disk file system that creation cost the harnesses a third of
   # their inputs.
   scratch=${TMPDIR:-/tmp}
-  if [[ -z "${TMPDIR:-}" && -d /dev/shm && -w /dev/shm ]]; then scratch=/dev/shm; fi
+  if [[ -d /dev/shm && -w /dev/shm ]]; then scratch=/dev/shm; fi
   work=$(mktemp -d "$scratch/ltc-fuzz.XXXXXX") keep=0
 fi
 work=$(cd "$work" && pwd)
