@@ -45,6 +45,17 @@
 
 #include <ltc/tables/ltc_table.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/surface.hpp>
+#include <ltc/shading/lobes.hpp>
+#include <ltc/shading/ggx_models.hpp>
+#include <ltc/shading/shade.hpp>
+#include <ltc/shading/lights/light_error.hpp>
+#include <ltc/shading/lights/polygon_light.hpp>
+#include <ltc/shading/lights/disk_light.hpp>
+#include <ltc/shading/lights/sphere_light.hpp>
+#include <ltc/shading/lights/line_light.hpp>
+#include <ltc/shading/lights/tube_light.hpp>
+#include <ltc/shading/lights/textured_quad_light.hpp>
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>

@@ -25,6 +25,7 @@
 
 #include <ltc/shading/ggx_cosine_lobe_fetch.hpp>
 #include <ltc/shading/polygon_light_radiance.hpp>
+#include <ltc/shading/shade.hpp>
 
 #include <glm/glm.hpp>
 
@@ -33,6 +34,7 @@
 
 LTC_NAMESPACE_BEGIN
 
+/// Deprecated: ltc::shade_lobes with lobes::ltc_and_cosine (ltc/shading/lobes.hpp).
 /// Shading with explicit coefficients (lobes[0] the cosine's magnitude and Fresnel term, its
 /// m_inv unused; lobes[1] the LTC, m_inv in the local frame of `frame`; each magnitude and
 /// fresnel carrying its share, as ggx_cosine_lobe::fetch returns them).
@@ -41,12 +43,11 @@ inline polygon_light_result<T> shade_polygon_light_cosine_lobe(
     const shading_frame<T>& frame, const std::array<ltc_coefficients<T>, 2>& lobes, const glm::vec<3, T>& P,
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
-    const polygon_light_integrals<T> I = integrate_polygon_light<Policy>(frame, lobes[1].m_inv, P, vertices, n, clip);
-    polygon_light_result<T> r = polygon_light_radiance(I, lobes[1], F0, albedo, radiance, side);
-    r.specular += radiance * brdf_scale(F0, lobes[0]) * apply_sidedness(I.form_factor, side);
-    return r;
+    return shade_lobes<Policy>(shading_point<T>{frame, P, F0, albedo}, lobes::ltc_and_cosine<T>{lobes[1], lobes[0]},
+                               detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance), shade_options{clip});
 }
 
+/// Deprecated: ltc::shade<ltc::ggx::ltc_and_cosine> (ltc/shading/shade.hpp).
 /// Shading with the GGX table of an LTC and the cosine: cos theta_v from N and V, both lobes from
 /// ggx_cosine_lobe::fetch(cos theta_v, roughness) (alpha = roughness^2).
 template <typename Policy = edge_policy::automatic, typename T>
@@ -57,9 +58,9 @@ inline polygon_light_result<T> shade_polygon_light_cosine_lobe(const glm::vec<3,
                                                                const glm::vec<3, T>* vertices, std::size_t n,
                                                                sidedness side,
                                                                horizon_clipping clip = horizon_clipping::ltc_space) {
-    const shading_frame<T> frame = make_shading_frame(N, V);
-    return shade_polygon_light_cosine_lobe<Policy>(frame, ggx_cosine_lobe::fetch<T>(frame.cos_theta_v, roughness), P, F0,
-                                                   albedo, radiance, vertices, n, side, clip);
+    return shade<ggx::ltc_and_cosine, Policy>(surface<T>{P, N, V, roughness, F0, albedo},
+                                              detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance),
+                                              shade_options{clip});
 }
 
 LTC_NAMESPACE_END

@@ -55,6 +55,8 @@
 #include <ltc/core/edge_policy.hpp>
 #include <ltc/core/sidedness.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
+#include <ltc/shading/lights/polygon_light.hpp>
+#include <ltc/shading/shade.hpp>
 
 #include <glm/glm.hpp>
 
@@ -62,6 +64,7 @@
 
 LTC_NAMESPACE_BEGIN
 
+/// Deprecated: ltc::shade<ltc::ggx::one_lobe> (ltc/shading/shade.hpp).
 /// Shading with the library's one-lobe GGX table (the default before issue 16): cos theta_v from
 /// N and V, the coefficients from ltc::ggx::fetch(cos theta_v, roughness) (alpha = roughness^2).
 /// The textured, line, disk, sphere and tube lights use this table.
@@ -73,11 +76,12 @@ inline polygon_light_result<T> shade_polygon_light_one_lobe(const glm::vec<3, T>
                                                             const glm::vec<3, T>* vertices, std::size_t n,
                                                             sidedness side,
                                                             horizon_clipping clip = horizon_clipping::ltc_space) {
-    const shading_frame<T> frame = make_shading_frame(N, V);
-    return shade_polygon_light<Policy>(frame, ggx::fetch<T>(frame.cos_theta_v, roughness), P, F0, albedo, radiance,
-                                       vertices, n, side, clip);
+    return shade<ggx::one_lobe, Policy>(surface<T>{P, N, V, roughness, F0, albedo},
+                                        detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance),
+                                        shade_options{clip});
 }
 
+/// Deprecated: ltc::shade (ltc/shading/shade.hpp).
 /// Shading with the library's default GGX table, an LTC and the clamped cosine about the normal
 /// (ltc/shading/cosine_lobe_polygon_light.hpp): it calls shade_polygon_light_cosine_lobe.
 /// Against shade_polygon_light_one_lobe: half the error (README, "Shading polygonal lights with
@@ -88,7 +92,9 @@ inline polygon_light_result<T> shade_polygon_light(const glm::vec<3, T>& P, cons
                                                    const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
                                                    const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
                                                    horizon_clipping clip = horizon_clipping::ltc_space) {
-    return shade_polygon_light_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, radiance, vertices, n, side, clip);
+    return shade<ggx::ltc_and_cosine, Policy>(surface<T>{P, N, V, roughness, F0, albedo},
+                                              detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance),
+                                              shade_options{clip});
 }
 
 LTC_NAMESPACE_END

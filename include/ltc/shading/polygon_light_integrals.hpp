@@ -142,24 +142,20 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrals_shading_first(const 
     return r;
 }
 
-}  // namespace detail
-
-/// The signed integrals (form factor E and LTC integral I_ltc) of the world-space polygon
-/// vertices[0..n) seen from P in `frame`, for the LTC whose inverse matrix in the local frame
-/// is m_inv (any scale, any sign of determinant). Policy evaluates the edge terms (edge_policy;
-/// by default `automatic`: minimax_rational in float, exact in double).
-template <typename Policy = edge_policy::automatic, typename T>
-LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
+/// integrate_polygon_light over the world-space vertices vertex_at(0..n) (polygon_light reads a
+/// caller's vertices in either order through it).
+template <typename Policy, typename T, typename VertexAt>
+LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light_at(
     const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T>& P,
-    const glm::vec<3, T>* vertices, std::size_t n, horizon_clipping clip = horizon_clipping::ltc_space) {
+    const VertexAt& vertex_at, std::size_t n, horizon_clipping clip) {
     using vec3 = glm::vec<3, T>;
     using EdgePolicy = edge_policy::resolve_t<Policy, T>;
     polygon_light_integrals<T> r;
     if (!frame.valid || n < 3) return r;
     // Local coordinates of vertex i: as given (the clipless orientation test needs the planar
     // polygon), and divided by their largest coordinate (the integrals only need directions).
-    const auto local_raw = [&](std::size_t i) { return frame.to_local(vec3(vertices[i]) - P); };
-    const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertices[i]) - P)); };
+    const auto local_raw = [&](std::size_t i) { return frame.to_local(vec3(vertex_at(i)) - P); };
+    const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertex_at(i)) - P)); };
     switch (clip) {
         case horizon_clipping::shading_first:
             return detail::integrals_shading_first<T, EdgePolicy>(m_inv, local_at, n, true);
@@ -193,6 +189,38 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
     }
 }
 
+/// integrate_polygon_light_ltc over vertex_at(0..n).
+template <typename Policy, typename T, typename VertexAt>
+LTC_HOST_DEVICE inline T integrate_polygon_light_ltc_at(const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv,
+                                                        const glm::vec<3, T>& P, const VertexAt& vertex_at,
+                                                        std::size_t n, horizon_clipping clip) {
+    if (clip != horizon_clipping::ltc_space)
+        return integrate_polygon_light_at<Policy>(frame, m_inv, P, vertex_at, n, clip).ltc;
+    using vec3 = glm::vec<3, T>;
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
+    if (!frame.valid || n < 3) return T(0);
+    const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertex_at(i)) - P)); };
+    T s = T(0);
+    detail::with_local_vertices<T>(local_at, n, [&](const auto& at) {
+        s = clamped_cosine<T, EdgePolicy>::signed_integral(detail::make_directions([&](std::size_t i) { return m_inv * at(i); }), n);
+    });
+    return glm::determinant(m_inv) < T(0) ? -s : s;
+}
+
+}  // namespace detail
+
+/// The signed integrals (form factor E and LTC integral I_ltc) of the world-space polygon
+/// vertices[0..n) seen from P in `frame`, for the LTC whose inverse matrix in the local frame
+/// is m_inv (any scale, any sign of determinant). Policy evaluates the edge terms (edge_policy;
+/// by default `automatic`: minimax_rational in float, exact in double).
+template <typename Policy = edge_policy::automatic, typename T>
+LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light(
+    const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T>& P,
+    const glm::vec<3, T>* vertices, std::size_t n, horizon_clipping clip = horizon_clipping::ltc_space) {
+    return detail::integrate_polygon_light_at<Policy>(frame, m_inv, P, [&](std::size_t i) { return vertices[i]; }, n,
+                                                      clip);
+}
+
 /// I_ltc alone: integrate_polygon_light(...).ltc, the same bits, for a second lobe whose form
 /// factor a first call already gave (ltc/shading/two_lobe_polygon_light.hpp). ltc_space skips the
 /// form factor's edge sum; the other strategies share one clip between the two integrals and
@@ -201,16 +229,8 @@ template <typename Policy = edge_policy::automatic, typename T>
 LTC_HOST_DEVICE inline T integrate_polygon_light_ltc(const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv,
                                                      const glm::vec<3, T>& P, const glm::vec<3, T>* vertices, std::size_t n,
                                                      horizon_clipping clip = horizon_clipping::ltc_space) {
-    if (clip != horizon_clipping::ltc_space) return integrate_polygon_light<Policy>(frame, m_inv, P, vertices, n, clip).ltc;
-    using vec3 = glm::vec<3, T>;
-    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
-    if (!frame.valid || n < 3) return T(0);
-    const auto local_at = [&](std::size_t i) { return frame.to_local(detail::rescaled(vec3(vertices[i]) - P)); };
-    T s = T(0);
-    detail::with_local_vertices<T>(local_at, n, [&](const auto& at) {
-        s = clamped_cosine<T, EdgePolicy>::signed_integral(detail::make_directions([&](std::size_t i) { return m_inv * at(i); }), n);
-    });
-    return glm::determinant(m_inv) < T(0) ? -s : s;
+    return detail::integrate_polygon_light_ltc_at<Policy>(frame, m_inv, P, [&](std::size_t i) { return vertices[i]; },
+                                                          n, clip);
 }
 
 LTC_NAMESPACE_END

@@ -11,6 +11,9 @@
 
 #include <ltc/shading/polygon_light_integrals.hpp>  // horizon_clipping, integrate_polygon_light
 #include <ltc/shading/shading_frame.hpp>            // shading_frame, make_shading_frame
+#include <ltc/shading/lights/polygon_light.hpp>
+#include <ltc/shading/lobes.hpp>
+#include <ltc/shading/surface.hpp>
 
 #include <ltc/config.hpp>
 #include <ltc/core/edge_policy.hpp>
@@ -23,12 +26,9 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// Specular and diffuse radiance reflected towards V (RGB, or any 3 channels).
+/// Specular and diffuse radiance reflected towards V (the name before ltc::shading_result).
 template <typename T>
-struct polygon_light_result {
-    glm::vec<3, T> specular{T(0)};
-    glm::vec<3, T> diffuse{T(0)};
-};
+using polygon_light_result = shading_result<T>;
 
 /// The radiance of the file comment from the two signed integrals (the light's facing applied).
 template <typename T>
@@ -43,15 +43,16 @@ LTC_HOST_DEVICE inline polygon_light_result<T> polygon_light_radiance(const poly
 }
 
 /// Shading with explicit LTC coefficients (m_inv in the local frame of `frame`, magnitude,
-/// fresnel; e.g. from ltc::ltc_table::fetch(frame.cos_theta_v, roughness)).
+/// fresnel; e.g. from ltc::ltc_table::fetch(frame.cos_theta_v, roughness)). Deprecated: use
+/// ltc::shade_lobes(shading_point, lobes::one{lobe}, light, options) (ltc/shading/lobes.hpp).
 template <typename Policy = edge_policy::automatic, typename T>
 LTC_HOST_DEVICE inline polygon_light_result<T> shade_polygon_light(
     const shading_frame<T>& frame, const ltc_coefficients<T>& lobe, const glm::vec<3, T>& P,
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
     horizon_clipping clip = horizon_clipping::ltc_space) {
-    return polygon_light_radiance(integrate_polygon_light<Policy>(frame, lobe.m_inv, P, vertices, n, clip), lobe, F0,
-                                  albedo, radiance, side);
+    return shade_lobes<Policy>(shading_point<T>{frame, P, F0, albedo}, lobes::one<T>{lobe},
+                               detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance), shade_options{clip});
 }
 
 LTC_NAMESPACE_END

@@ -19,6 +19,7 @@
 #include <ltc/shading/polygon_light_integrals.hpp>  // integrate_polygon_light_ltc, horizon_clipping
 #include <ltc/shading/polygon_light_radiance.hpp>   // polygon_light_result, shade_polygon_light(frame, lobe, ...)
 #include <ltc/shading/shading_frame.hpp>
+#include <ltc/shading/shade.hpp>
 
 #include <glm/glm.hpp>
 
@@ -27,6 +28,7 @@
 
 LTC_NAMESPACE_BEGIN
 
+/// Deprecated: a light's ltc_integral (ltc/shading/lobes.hpp, "The light interface").
 /// The second lobe's specular term (its magnitude and Fresnel carrying its share), which
 /// shade_polygon_light_two_lobe adds to the first lobe's shading: its LTC integral alone.
 template <typename Policy = edge_policy::automatic, typename T>
@@ -34,10 +36,11 @@ inline glm::vec<3, T> second_lobe_specular(const shading_frame<T>& frame, const 
                                            const glm::vec<3, T>& P, const glm::vec<3, T>& F0,
                                            const glm::vec<3, T>& radiance, const glm::vec<3, T>* vertices, std::size_t n,
                                            sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
-    const T second = integrate_polygon_light_ltc<Policy>(frame, lobe.m_inv, P, vertices, n, clip);
-    return radiance * brdf_scale(F0, lobe) * apply_sidedness(second, side);
+    const auto light = detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance);
+    return light.emitted(brdf_scale(F0, lobe), light.template ltc_integral<Policy>(frame, P, lobe.m_inv, shade_options{clip}));
 }
 
+/// Deprecated: ltc::shade_lobes with lobes::two (ltc/shading/lobes.hpp).
 /// Shading with explicit coefficients for both lobes (m_inv in the local frame of `frame`; each
 /// lobe's magnitude and fresnel carrying its share, as ggx_two_lobe::fetch returns them).
 template <typename Policy = edge_policy::automatic, typename T>
@@ -45,11 +48,11 @@ inline polygon_light_result<T> shade_polygon_light_two_lobe(
     const shading_frame<T>& frame, const std::array<ltc_coefficients<T>, 2>& lobes, const glm::vec<3, T>& P,
     const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
     const glm::vec<3, T>* vertices, std::size_t n, sidedness side, horizon_clipping clip = horizon_clipping::ltc_space) {
-    polygon_light_result<T> r = shade_polygon_light<Policy>(frame, lobes[0], P, F0, albedo, radiance, vertices, n, side, clip);
-    r.specular += second_lobe_specular<Policy>(frame, lobes[1], P, F0, radiance, vertices, n, side, clip);
-    return r;
+    return shade_lobes<Policy>(shading_point<T>{frame, P, F0, albedo}, lobes::two<T>{lobes[0], lobes[1]},
+                               detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance), shade_options{clip});
 }
 
+/// Deprecated: ltc::shade<ltc::ggx::two_lobes> (ltc/shading/shade.hpp).
 /// Shading with the two-lobe GGX table: cos theta_v from N and V, both lobes from
 /// ggx_two_lobe::fetch(cos theta_v, roughness) (alpha = roughness^2).
 template <typename Policy = edge_policy::automatic, typename T>
@@ -58,9 +61,9 @@ inline polygon_light_result<T> shade_polygon_light_two_lobe(const glm::vec<3, T>
                                                             const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
                                                             const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
                                                             horizon_clipping clip = horizon_clipping::ltc_space) {
-    const shading_frame<T> frame = make_shading_frame(N, V);
-    return shade_polygon_light_two_lobe<Policy>(frame, ggx_two_lobe::fetch<T>(frame.cos_theta_v, roughness), P, F0, albedo,
-                                                radiance, vertices, n, side, clip);
+    return shade<ggx::two_lobes, Policy>(surface<T>{P, N, V, roughness, F0, albedo},
+                                         detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance),
+                                         shade_options{clip});
 }
 
 LTC_NAMESPACE_END

@@ -1,0 +1,47 @@
+// ltc/shading/shade.hpp -- one entry point for every light and every material model:
+//
+//   ltc::surface<float> s{P, N, V, roughness, F0, albedo};
+//   auto quad = ltc::polygon_light<float>::one_sided(vertices, 4, emission_normal, radiance);
+//   ltc::shading_result<float> r = ltc::shade(s, quad);          // ltc::ggx::ltc_and_cosine
+//   r = ltc::shade<ltc::ggx::two_lobes>(s, quad, {ltc::horizon_clipping::shading_first});
+//
+// shade<Model>(s, light, options) builds the frame of the tables at s.position (N = +z, V in the
+// xz-plane: make_shading_frame), reads the model's lobes at (cos theta_v, roughness) and shades
+// them against the light (ltc/shading/lobes.hpp: the equations). Lights: polygon_light, disk_light,
+// sphere_light, line_light, tube_light (ltc/shading/lights/) and textured_quad_light
+// (ltc/shading/textured_light.hpp). Models: ltc::ggx::one_lobe, ltc_and_cosine (the default),
+// two_lobes (ltc/shading/ggx_models.hpp), or a user's own (the model interface there).
+//
+// Bad input, the same for every light and model: a zero or non-finite normal or view vector
+// gives 0 (specular and diffuse); the roughness is clamped to [0, 1], NaN read as 0 (the table's
+// domain); lights check their own construction (ltc/shading/lights/light_error.hpp).
+#pragma once
+
+#include <ltc/config.hpp>
+#include <ltc/core/edge_policy.hpp>
+#include <ltc/shading/ggx_models.hpp>
+#include <ltc/shading/lobes.hpp>
+#include <ltc/shading/shading_frame.hpp>
+#include <ltc/shading/surface.hpp>
+
+LTC_NAMESPACE_BEGIN
+
+/// The shading point of s in the frame of the tables (invalid frame: N or V zero or not finite).
+template <typename T>
+LTC_HOST_DEVICE inline shading_point<T> make_shading_point(const surface<T>& s) {
+    return {make_shading_frame(s.normal, s.view), s.position, s.f0, s.albedo};
+}
+
+/// Radiance reflected towards s.view from `light`, with the lobes of Model (file comment).
+/// Policy: the edge terms of the polygon integrals (ltc/core/edge_policy.hpp).
+template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
+inline shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
+    if (!detail::finite(s.position) || !detail::finite(s.normal) || !detail::finite(s.view) ||
+        s.view == glm::vec<3, T>(T(0)))
+        return {};
+    const shading_point<T> p = make_shading_point(s);
+    if (!p.frame.valid) return {};
+    return shade_lobes<Policy>(p, Model::template fetch<T>(p.frame.cos_theta_v, s.roughness), light, options);
+}
+
+LTC_NAMESPACE_END
