@@ -1,4 +1,4 @@
-// ltc/fitting/fit_two_lobes.hpp -- fitting a node with a *sum of two* LTCs (issue 16: where one
+// ltc/fitting/fit_two_lobes.hpp -- fitting a node with a *sum of two* LTCs (where one
 // linearly transformed cosine cannot follow GGX, at grazing views and low roughness):
 //
 //   f = rho cos ~= magnitude * ((1 - s) D_1 + s D_2),   D_i the LTC of M_i, s in (0, 1),

@@ -1,5 +1,5 @@
 // ltc/fitting/integral_objective.hpp -- an opt-in objective for the fit (options::goal =
-// objective::integrals or objective::combined; issue 16): instead of the paper's L3 distance
+// objective::integrals or objective::combined): instead of the paper's L3 distance
 // between the lobes, the relative error of the *integrals* that shading computes, over a fixed
 // family of spherical polygons around and off the lobe (polygon_family, integral_targets,
 // integral_loss). ltc/fitting/fit_integrals.hpp minimizes it.

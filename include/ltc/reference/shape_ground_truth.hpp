@@ -1,6 +1,6 @@
 // ltc/reference/shape_ground_truth.hpp -- Monte Carlo ground truth for sphere, disk, tube and line
 // lights: the integral of a BRDF model's rho(V, L) cos(theta_L) over the directions that the light
-// covers, with its standard error (issue 14; the polygon version is ltc/reference/ground_truth.hpp).
+// covers, with its standard error (the polygon version is ltc/reference/ground_truth.hpp).
 //
 //   #include <ltc/reference/shape_ground_truth.hpp>
 //   namespace gt = ltc::ground_truth;

@@ -1,5 +1,5 @@
 // ltc/shading/ggx_cosine_lobe_fetch.hpp -- the GGX table of one LTC plus the clamped cosine about
-// the normal, and its lookup (issue 16): the table of the default shading (ltc::shade_polygon_light,
+// the normal, and its lookup: the table of the default shading (ltc::shade_polygon_light,
 // ltc::batch::shade_polygon_light and shade_quad_lights):
 //
 //   rho cos ~= magnitude ((1 - s) D_cos + s D_M),

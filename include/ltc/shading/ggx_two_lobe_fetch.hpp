@@ -1,4 +1,4 @@
-// ltc/shading/ggx_two_lobe_fetch.hpp -- the opt-in two-lobe GGX table and its lookup (issue 16):
+// ltc/shading/ggx_two_lobe_fetch.hpp -- the opt-in two-lobe GGX table and its lookup:
 // rho cos ~= magnitude ((1 - s) D_1 + s D_2), a sum of two LTCs, each integrated over a polygon
 // exactly, where one LTC cannot follow GGX (grazing views, low roughness).
 //
