@@ -7,29 +7,21 @@
 // overview of the method) and the text is ltc::fit::table_header_text (ltc/fitting/table_writer.hpp);
 // the output depends only on the options that change the fit (--brdf, --size, --objective), never
 // on --threads: the same binary writes the same bytes with any thread count.
+#include "common/cli.hpp"
+#include "common/progress.hpp"
+
 #include <ltc/brdf/beckmann.hpp>
 #include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/fitting/table_writer.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <string>
 #include <thread>
-
-#if defined(_WIN32)
-#include <io.h>
-#define LTC_FIT_ISATTY(fd) _isatty(fd)
-#else
-#include <unistd.h>
-#define LTC_FIT_ISATTY(fd) isatty(fd)
-#endif
 
 namespace {
 
@@ -42,11 +34,12 @@ const char* const usage_text =
     "normalized inverse matrix m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2], the\n"
     "magnitude and the Fresnel term; layout in ltc/tables/ltc_table.hpp).\n"
     "\n"
-    "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2\n"
-    "  --out FILE     the header to write ('-' for standard output)\n"
+    "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2 (required)\n"
+    "  --out FILE     the header to write ('-' for standard output; required); also -o FILE\n"
     "  --size N       nodes per axis (default 64 with one lobe, 32 with two; at least 2)\n"
     "  --objective O  l3 (default: the paper's, the shipped tables), integrals, combined,\n"
     "                 integrals+mag or combined+mag (opt-in, ltc/fitting/integral_objective.hpp)\n"
+    "  --lobes 1      one LTC per node (the default)\n"
     "  --lobes 2      a sum of two LTCs per node (ltc/fitting/fit_two_lobes.hpp; writes\n"
     "                 ltc::tables::<brdf>_two_lobe_size and _data, two such tables; --objective\n"
     "                 does not apply)\n"
@@ -54,9 +47,10 @@ const char* const usage_text =
     "                 ltc_and_cosine of fit_two_lobes.hpp, its integrals over the spiral\n"
     "                 family; writes <brdf>_cosine_lobe_size and _data, the two-lobe layout\n"
     "                 with lobe 1 the cosine; default size 32)\n"
-    "  --threads K    worker threads (default: all cores); the output does not depend on it\n"
-    "  --quiet        no progress bar (it is only drawn when standard error is a terminal)\n"
-    "  --help         this text\n"
+    "  --threads K    worker threads (default: all cores); the output does not depend on it; also -j K\n"
+    "  --quiet        no progress on standard error (default, with one lobe: a bar on a terminal,\n"
+    "                 else a line per tenth of the nodes); also -q\n"
+    "  --help         this text; also -h\n"
     "\n"
     "At the end it prints the time taken and the fit error (relative L1 and L3 distances\n"
     "between rho*cos and magnitude * LTC, as estimated by the fit) to standard output.\n"
@@ -83,62 +77,45 @@ struct arguments {
     std::exit(2);
 }
 
-long parse_integer(const std::string& option, const std::string& value, long lo, long hi) {
-    char* end = nullptr;
-    errno = 0;
-    const long v = std::strtol(value.c_str(), &end, 10);
-    if (value.empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
-        fail(option + " expects an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
-             value + "'");
-    return v;
-}
-
+/// The options (common/cli.hpp's loop and messages), then the checks across them.
 arguments parse(int argc, char** argv) {
+    using ltc_examples::option_status;
     arguments a;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        std::string value;
-        bool has_value = false;
-        const std::size_t eq = arg.find('=');
-        if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {  // --option=value
-            value = arg.substr(eq + 1);
-            arg = arg.substr(0, eq);
-            has_value = true;
-        }
-        const auto next = [&]() -> std::string {
-            if (has_value) return value;
-            if (i + 1 >= argc) fail(arg + " expects a value");
-            return argv[++i];
-        };
-        if (arg == "--help" || arg == "-h") {
-            std::cout << usage_text;
-            std::exit(0);
-        } else if (arg == "--brdf") {
-            a.brdf = next();
-        } else if (arg == "--out" || arg == "-o") {
-            a.out = next();
-        } else if (arg == "--size") {
-            a.size = int(parse_integer(arg, next(), 2, 4096));
-        } else if (arg == "--objective") {
-            const std::string o = next();
+    const auto help = [](const char*) { std::cout << usage_text; };
+    const auto flag = [&](const std::string& name) {
+        if (name != "--quiet" && name != "-q") return false;
+        a.quiet = true;
+        return true;
+    };
+    const auto option = [&](const std::string& name, const ltc_examples::option_value& v) {
+        if (name == "--brdf") {
+            a.brdf = v.text;
+        } else if (name == "--out" || name == "-o") {
+            a.out = v.text;
+        } else if (name == "--size") {
+            if (!v.integer_in(2, 4096)) return option_status::bad;
+            a.size = int(v.number);
+        } else if (name == "--objective") {
+            const std::string o = v.text;
             a.fit_magnitude = o.size() > 4 && o.compare(o.size() - 4, 4, "+mag") == 0;
             const std::string base = a.fit_magnitude ? o.substr(0, o.size() - 4) : o;
             if (base == "l3" && !a.fit_magnitude) a.goal = ltc::fit::objective::l3;
             else if (base == "integrals") a.goal = ltc::fit::objective::integrals;
             else if (base == "combined") a.goal = ltc::fit::objective::combined;
-            else fail("unknown objective '" + o + "' (l3, integrals, combined, integrals+mag, combined+mag)");
-        } else if (arg == "--lobes") {
-            const std::string l = next();
-            if (l == "cosine") a.lobes = 2, a.model = ltc::fit::two_lobe_model::ltc_and_cosine;
-            else a.lobes = int(parse_integer(arg, l, 1, 2)), a.model = ltc::fit::two_lobe_model::two_ltcs;
-        } else if (arg == "--threads" || arg == "-j") {
-            a.threads = unsigned(parse_integer(arg, next(), 1, 4096));
-        } else if (arg == "--quiet" || arg == "-q") {
-            a.quiet = true;
+            else return option_status::bad;
+        } else if (name == "--lobes") {
+            if (std::string(v.text) == "cosine") a.lobes = 2, a.model = ltc::fit::two_lobe_model::ltc_and_cosine;
+            else if (v.integer_in(1, 2)) a.lobes = int(v.number), a.model = ltc::fit::two_lobe_model::two_ltcs;
+            else return option_status::bad;
+        } else if (name == "--threads" || name == "-j") {
+            if (!v.integer_in(1, 4096)) return option_status::bad;
+            a.threads = unsigned(v.number);
         } else {
-            fail("unknown argument '" + arg + "'");
+            return option_status::unknown;
         }
-    }
+        return option_status::taken;
+    };
+    if (const int r = ltc_examples::parse_options(argc, argv, help, flag, option); r != 0) std::exit(r == 1 ? 0 : 2);
     if (a.brdf.empty()) fail("--brdf is required");
     if (a.brdf != "ggx" && a.brdf != "beckmann") fail("unknown BRDF '" + a.brdf + "' (ggx or beckmann)");
     if (a.out.empty()) fail("--out is required");
@@ -146,38 +123,6 @@ arguments parse(int argc, char** argv) {
     if (a.size == 0) a.size = a.lobes == 2 ? ltc::fit::two_lobe_default_size : ltc::fit::options{}.size;
     return a;
 }
-
-/// "[=====>      ]  42.0%  1720/4096 nodes  3.1 s elapsed, about 4.3 s left", redrawn in place.
-class progress_bar {
-  public:
-    explicit progress_bar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
-
-    void operator()(std::size_t done, std::size_t total) {
-        if (!enabled_ || total == 0) return;
-        const double elapsed = seconds();
-        const double fraction = double(done) / double(total);
-        constexpr int width = 30;
-        const int filled = int(fraction * width);
-        std::string bar(std::size_t(width), ' ');
-        for (int i = 0; i < filled; ++i) bar[std::size_t(i)] = '=';
-        if (filled < width) bar[std::size_t(filled)] = '>';
-        char eta[48] = "estimating time left";
-        if (done > 0 && done < total) std::snprintf(eta, sizeof eta, "about %.0f s left", elapsed * (1 / fraction - 1));
-        if (done >= total) std::snprintf(eta, sizeof eta, "done");
-        std::fprintf(stderr, "\r[%s] %5.1f%%  %zu/%zu nodes  %.1f s elapsed, %-22s", bar.c_str(), 100 * fraction, done,
-                     total, elapsed, eta);
-        if (done >= total) std::fputc('\n', stderr);
-        std::fflush(stderr);
-    }
-
-    double seconds() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-
-  private:
-    bool enabled_;
-    std::chrono::steady_clock::time_point start_;
-};
 
 /// Writes the header text to `out` ('-': standard output); false (with a message) if it cannot.
 bool write_text(const std::string& out, const std::string& text) {
@@ -199,8 +144,7 @@ int run(const arguments& args, const char* description) {
     opt.threads = args.threads;
     opt.goal = args.goal;
     opt.fit_magnitude = args.fit_magnitude;
-    const bool draw = !args.quiet && LTC_FIT_ISATTY(2);
-    progress_bar bar(draw);
+    ltc_examples::progress bar("fit", "nodes", ltc_examples::progress_on_stderr(args.quiet));
     if (args.lobes == 2) {
         const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(opt, args.model);
         const double seconds = bar.seconds();
@@ -213,7 +157,7 @@ int run(const arguments& args, const char* description) {
                      args.out == "-" ? "" : "; wrote ", args.out == "-" ? "" : args.out.c_str());
         return 0;
     }
-    const ltc::fit::table tab = ltc::fit::fit_table<Brdf>(opt, [&](std::size_t done, std::size_t total) { bar(done, total); });
+    const ltc::fit::table tab = ltc::fit::fit_table<Brdf>(opt, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     const double seconds = bar.seconds();
     const ltc::fit::error_summary err = ltc::fit::summarize_error(tab);
     if (!write_text(args.out, ltc::fit::table_header_text(args.brdf, description, tab, opt))) return 1;

@@ -4,6 +4,7 @@
 //
 // The supplement's MATLAB functions are transcribed in tests/support/supplement_matlab.hpp;
 // the exact moments come from a converged Gauss-Legendre rule (tests/support/moments.hpp).
+#include "common/cli.hpp"
 #include "support/moments.hpp"
 #include "support/rng.hpp"
 #include "support/supplement_matlab.hpp"
@@ -12,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace {
 
@@ -63,9 +65,27 @@ double cube_total(const distribution_row& row, const glm::dmat3& M) {
     return total;
 }
 
+void print_help(const char* argv0) {
+    std::printf(
+        "usage: %s [--help]\n"
+        "\n"
+        "Prints the supplemental material's validation session (Heitz et al. 2016, supplement\n"
+        "section 2: normalization, polygonal integration, importance sampling) next to the\n"
+        "library's exact values and the errors of each. It takes no options.\n"
+        "\n"
+        "  --help, -h   this text\n",
+        argv0);
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    const auto no_flags = [](const std::string&) { return false; };
+    const auto no_options = [](const std::string&, const ltc_examples::option_value&) {
+        return ltc_examples::option_status::unknown;
+    };
+    if (const int r = ltc_examples::parse_options(argc, argv, print_help, no_flags, no_options); r != 0)
+        return r == 1 ? 0 : 2;
     const glm::dmat3 M = example_matrix();
     const glm::dvec3 P1(0, 0, 1), P2(1, 0, 1), P3(1, 1, 1);
     const glm::dvec3 tri[3] = {P1, P2, P3};

@@ -1,16 +1,24 @@
-// common/cli.hpp -- what the renderers' command lines (render, shadows) share: the image options
-// (--width, --height, --threads, --out, --seed, --exposure), the parsing loop with its messages,
-// and the output directory. An example's options derive from image_options (with its image size)
-// and its parser hands parse_command_line its own options:
+// common/cli.hpp -- the examples' command lines: parse_options, the loop every example's parser
+// runs (--help and -h, options with a value as "--name value" or "--name=value", the error
+// messages), and for the renderers (render, shadows) the image options they share (--width,
+// --height, --threads, --out, --seed, --exposure), parse_command_line, and the output directory.
+// A parser hands parse_options its flags (options without a value) and its other options:
 //
-//   struct options : ltc_examples::image_options { options() : image_options(320, 200) {} int spp = 4; };
+//   const auto flag = [&](const std::string& name) {
+//       if (name != "--list") return false;
+//       list = true;
+//       return true;
+//   };
 //   const auto option = [&](const std::string& name, const ltc_examples::option_value& v) {
 //       if (name != "--spp") return ltc_examples::option_status::unknown;
 //       if (!v.integer_in(1, 1e6)) return ltc_examples::option_status::bad;
-//       o.spp = static_cast<int>(v.number);
+//       spp = static_cast<int>(v.number);
 //       return ltc_examples::option_status::taken;
 //   };
-//   return ltc_examples::parse_command_line(argc, argv, o, print_help, no_flags, option);  // 0, 1, 2
+//   return ltc_examples::parse_options(argc, argv, print_help, flag, option);  // 0, 1 (--help), 2
+//
+// The renderers' options derive from image_options (with its image size) and call
+// parse_command_line(argc, argv, o, print_help, flag, option) instead, which adds the image options.
 #pragma once
 
 #include <algorithm>
@@ -75,41 +83,64 @@ inline option_status parse_image_option(const std::string& name, const option_va
     return option_status::taken;
 }
 
-/// Parses argv into o: --help or -h calls help(argv[0]) and returns 1; flag(name) takes an
-/// option without a value (and says whether it did); any other option is "--name value", one of
-/// parse_image_option's, else given to option(name, value) (an option_status). A missing, bad or
-/// unknown option prints its message on stderr and returns 2. Returns 0 on success, with
-/// o.threads resolved (0: the hardware's thread count).
+/// Parses argv: --help or -h calls help(argv[0]) (which prints on stdout) and returns 1;
+/// flag(name) takes an option without a value (and says whether it did); any other option is
+/// "--name value" or "--name=value", given to option(name, value) (an option_status; where the
+/// value is missing, asked with "" to tell an unknown name from a missing value). A missing, bad
+/// or unknown option prints its message on stderr and returns 2. Returns 0 on success.
 template <typename Help, typename Flag, typename Option>
-int parse_command_line(int argc, char** argv, image_options& o, Help&& help, Flag&& flag, Option&& option) {
+int parse_options(int argc, char** argv, Help&& help, Flag&& flag, Option&& option) {
     for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
+        std::string a = argv[i];
         if (a == "--help" || a == "-h") {
             help(argv[0]);
             return 1;
         }
         if (flag(a)) continue;
-        if (i + 1 >= argc) {
-            std::fprintf(stderr, "%s: unknown option or missing value: %s (see --help)\n", argv[0], a.c_str());
-            return 2;
-        }
         option_value v;
-        v.text = argv[++i];
+        std::string attached;  // the value of "--name=value"
+        const std::size_t eq = a.rfind("--", 0) == 0 ? a.find('=') : std::string::npos;
+        const bool has_value = eq != std::string::npos || i + 1 < argc;
+        if (eq != std::string::npos) {
+            attached = a.substr(eq + 1);
+            a.resize(eq);
+            if (flag(a)) {
+                std::fprintf(stderr, "%s: %s takes no value (see --help)\n", argv[0], a.c_str());
+                return 2;
+            }
+            v.text = attached.c_str();
+        } else if (has_value) {
+            v.text = argv[++i];
+        }
         v.is_number = parse_number(v.text, v.number);
         v.is_integer = v.is_number && v.number == std::floor(v.number);
-        option_status status = parse_image_option(a, v, o);
-        if (status == option_status::unknown) status = option(a, v);
-        if (status == option_status::bad) {
-            std::fprintf(stderr, "%s: bad value for %s: %s\n", argv[0], a.c_str(), v.text);
-            return 2;
-        }
+        const option_status status = option(a, v);
         if (status == option_status::unknown) {
             std::fprintf(stderr, "%s: unknown option: %s (see --help)\n", argv[0], a.c_str());
             return 2;
         }
+        if (!has_value) {
+            std::fprintf(stderr, "%s: missing value for %s (see --help)\n", argv[0], a.c_str());
+            return 2;
+        }
+        if (status == option_status::bad) {
+            std::fprintf(stderr, "%s: bad value for %s: %s (see --help)\n", argv[0], a.c_str(), v.text);
+            return 2;
+        }
     }
-    if (o.threads == 0) o.threads = std::max(1u, std::thread::hardware_concurrency());
     return 0;
+}
+
+/// parse_options with the image options (parse_image_option's) taken first; on success,
+/// o.threads resolved (0: the hardware's thread count).
+template <typename Help, typename Flag, typename Option>
+int parse_command_line(int argc, char** argv, image_options& o, Help&& help, Flag&& flag, Option&& option) {
+    const int r = parse_options(argc, argv, help, flag, [&](const std::string& name, const option_value& v) {
+        const option_status status = parse_image_option(name, v, o);
+        return status == option_status::unknown ? option(name, v) : status;
+    });
+    if (r == 0 && o.threads == 0) o.threads = std::max(1u, std::thread::hardware_concurrency());
+    return r;
 }
 
 /// Creates the output directory (and its parents) if needed; false, with a message, if it is not

@@ -1,5 +1,6 @@
 // ggx_error_report/fit_sizes.cpp -- section 7 of the report: tables fitted here at smaller sizes
 // (ltc::fit::fit_table), their fitting time and size, against the same ground truth.
+#include "common/progress.hpp"
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "report.hpp"
@@ -13,6 +14,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace ggx_error_report {
@@ -27,8 +29,10 @@ void print_fit_sizes(const std::vector<config>& grid, const evaluation& ev, cons
         ltc::fit::options fo;
         fo.size = n;
         fo.threads = threads;
+        ltc_examples::progress shown("fit " + std::to_string(n) + "x" + std::to_string(n), "nodes");
         const auto t0 = std::chrono::steady_clock::now();
-        const ltc::fit::table tab = ltc::fit::fit_table<ltc::brdf::ggx>(fo);
+        const ltc::fit::table tab =
+            ltc::fit::fit_table<ltc::brdf::ggx>(fo, [&](std::size_t d, std::size_t t) { shown.update(d, t); });
         const double secs = seconds_since(t0);
         const std::vector<float> data = tab.packed();
         const ltc::ltc_table view(data.data(), n, n);

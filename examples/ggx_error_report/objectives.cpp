@@ -9,6 +9,7 @@
 // and roughness (no table: what any table resolution or spacing could reach at best). And the
 // table of an LTC and the clamped cosine, the default shading's
 // (ltc/shading/ggx_cosine_lobe_fetch.hpp), its fit timed here ("cosine-lobe-fit"), and its per-cell fits ("cells, LTC+cosine").
+#include "common/progress.hpp"
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "report.hpp"
@@ -229,8 +230,10 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
             std::printf("  %-16s (unknown objective)\n", name.c_str());
             continue;
         }
+        ltc_examples::progress shown("fit " + name, "nodes");
         const auto t0 = std::chrono::steady_clock::now();
-        const ltc::fit::table tab = ltc::fit::fit_table<ltc::brdf::ggx>(fo);
+        const ltc::fit::table tab =
+            ltc::fit::fit_table<ltc::brdf::ggx>(fo, [&](std::size_t d, std::size_t t) { shown.update(d, t); });
         char time[32];
         std::snprintf(time, sizeof time, "%.2fs", seconds_since(t0));
         const std::vector<float> data = tab.packed();

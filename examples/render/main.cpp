@@ -138,7 +138,7 @@
 // --shapes (shapes.hpp, shapes_render.hpp): after the rest, unchanged, a disk, a sphere and a tube
 // light alone on the floor: shapes_ltc.png, shapes_reference.png, shapes_error.png, statistics.
 // Exit status 0, or 1 if an image could not be written or read or a value was not finite, 2
-// for bad arguments. A progress bar with an ETA for the reference render goes to stderr.
+// for bad arguments. The reference render's progress goes to stderr.
 //
 // Dependencies: GLM, stb_image_write and stb_image (Debian: libstb-dev, <stb/stb_image_write.h>,
 // <stb/stb_image.h>).
@@ -153,7 +153,7 @@
 // with the shadows example (examples/common/): cli.hpp (the command line's common options and
 // loop, the output directory), colour.hpp (luminance, tone mapping, false colour), image.hpp
 // (texture files in, PNGs out, through stb.hpp / stb.cpp), math.hpp, pinhole.hpp (the camera's
-// rays), random.hpp (seeds), threads.hpp (rows on worker threads, progress bar).
+// rays), random.hpp (seeds), threads.hpp (rows on worker threads), progress.hpp (progress on stderr).
 #include "camera.hpp"
 #include "common/cli.hpp"
 #include "common/colour.hpp"

@@ -127,12 +127,13 @@ inline void print_help(const char* argv0) {
         "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
         "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"
         "                   shapes_reference.png, shapes_error.png and their statistics, printed last\n"
-        "  --help           this text\n"
+        "  --help, -h       this text\n"
         "\n"
         "Floor: stripes dielectric | gold | dielectric | copper (left to right), crossed by bands of\n"
         "roughness 0.9, 0.7, 0.5, 0.3, 0.1 (near to far). Tone mapping, the same for both renders:\n"
         "exposure, the ACES filmic curve (Narkowicz 2015), clamp, sRGB. The default run takes about\n"
-        "35 s on 2 cores (about 25 s with --no-texture).\n",
+        "35 s on 2 cores (about 25 s with --no-texture). The reference's progress goes to stderr:\n"
+        "a bar on a terminal, else a line per tenth.\n",
         argv0);
 }
 

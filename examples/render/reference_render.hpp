@@ -1,5 +1,5 @@
 // render/reference_render.hpp -- the reference render, timed: every pixel by shade_reference on the
-// worker threads (a progress bar with an ETA on stderr), split into the polygonal lights' and the
+// worker threads (its progress on stderr), split into the polygonal lights' and the
 // textured light's radiance with the variances of their luminance (non-finite values counted and
 // replaced by black), and its printed time.
 #pragma once

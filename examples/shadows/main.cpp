@@ -131,6 +131,7 @@
 #include "common/cli.hpp"
 #include "common/colour.hpp"
 #include "common/image.hpp"
+#include "common/progress.hpp"
 #include "measure.hpp"
 #include "options.hpp"
 #include "report.hpp"
@@ -210,12 +211,17 @@ int main(int argc, char** argv) {
                                        &opt.mis_spp, &opt.denoised_spp, &opt.denoised_mis_spp};
     const method methods[] = {method::ratio_ltc, method::ratio_ltc_adaptive, method::ratio_area,
                               method::mis,       method::ratio_ltc_denoised, method::mis_denoised};
+    std::size_t sweep_done = 0, sweep_total = 0;
+    for (const std::vector<int>* l : lists) sweep_total += l->size();
+    ltc_examples::progress sweep("sweep", "renders");
+    sweep.update(0, sweep_total);
     for (int k = 0; k < 6; ++k) {
         const method m = methods[k];
         for (int spp : *lists[k]) {
             const method_image r =
                 render_method(s, *tr, hits, W, H, opt.threads, m, spp, opt.seed, opt.lobes, opt.filter, opt.screen_points);
             nonfinite += r.nonfinite;
+            sweep.update(++sweep_done, sweep_total);
             const std::string stem = std::string(method_name(m)) + "_" + std::to_string(spp) + "spp";
             const region_errors e = measure_error(hits, r.img, ref.img, dark_floor, spp == 4 ? &rgb : nullptr);
             rows.push_back({m, spp, r.seconds, r.cpu_seconds, r.rays_per_pixel, e});
@@ -232,11 +238,15 @@ int main(int argc, char** argv) {
     for (region g : regions) print_equal_time(rows, true, g);
 
     // (a)'s, (a+)'s and (d)'s errors split into their noise and bias: a second render of each with other seeds.
+    ltc_examples::progress second_renders("second seeds", "renders");
+    std::size_t second_done = 0;
+    second_renders.update(0, pairs.size());
     for (seed_pair& p : pairs) {
         const method_image second = render_method(s, *tr, hits, W, H, opt.threads, p.which, p.spp,
                                                   mix_seed(opt.seed, 0x5EEDu), opt.lobes, opt.filter, opt.screen_points, 1);
         p.second = second.img;
         nonfinite += second.nonfinite;
+        second_renders.update(++second_done, pairs.size());
     }
     print_noise_bias(pairs, hits, ref.img, dark_floor, ref_noise.rms);
     std::printf("\nnon-finite pixel values (made black; expected 0): %zu\n", nonfinite);

@@ -49,7 +49,7 @@ struct method_image {
 /// denoise.hpp), the pixels'
 /// sample points screen-ordered with screen_points (screen_order.hpp); timed with the
 /// filter (file comment) over up to max_runs runs (1: the reference, the second seeds). With a
-/// label: a progress bar on stderr.
+/// label: its progress on stderr.
 inline method_image render_method(const scene& s, const tracer& tr, const std::vector<pixel_hit>& hits, int W, int H,
                                   unsigned threads, method which, int spp, std::uint64_t seed, ltc::analytic_lobes lobes,
                                   const filter_settings& filter, bool screen_points, int max_runs = 5,

@@ -103,7 +103,7 @@ inline void print_help(const char* argv0) {
         "  --out DIR           output directory, created if needed (default: the current directory)\n"
         "  --seed S            base seed (default 1)\n"
         "  --exposure E        linear exposure before the tone curve (default 1)\n"
-        "  --help              this text\n"
+        "  --help, -h          this text\n"
         "\n"
         "The default run takes about 40 s on 2 idle cores (75 s of CPU time).\n",
         argv0);
