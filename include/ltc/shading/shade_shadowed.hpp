@@ -82,10 +82,11 @@
 // relative to the analytic one, per part of Hill's Fresnel split). K = 0 gives the analytic
 // result.
 //
-// Zero results, no queries: a light that faces away from P (one-sided) or lies below the
-// horizon; bad input, as ltc::shade: a position, normal or view vector not finite, a zero normal
-// or view; a polygon of fewer than 3 or more than 8 vertices (the samplers' fixed storage: no
-// allocation).
+// Zero results, no queries: where the analytic part is 0, a light that faces away from P
+// (one-sided: its integrals vanish, up to the rounding of ltc::shade's where it barely rises above
+// the horizon) or lies below the horizon; bad input, as ltc::shade: a position, normal or view
+// vector not finite, a zero normal or view; a polygon of fewer than 3 or more than 8 vertices (the
+// samplers' fixed storage: no allocation).
 //
 // The light: a polygon_light (ltc/shading/lights/polygon_light.hpp), a convex planar polygon of at
 // most 8 vertices, one-sided or two-sided; the samplers walk its vertices in the light's own
