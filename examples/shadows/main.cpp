@@ -1,5 +1,5 @@
 // shadows -- a small CPU renderer with real shadows, traced by Embree 3: LTC shading with
-// ratio-estimator shadows (ltc::shade_polygon_light_shadowed) against plain Monte Carlo.
+// ratio-estimator shadows (ltc::shade_shadowed) against plain Monte Carlo.
 //
 //   shadows [--width W] [--height H] [--spp LIST] [--adaptive-spp LIST] [--area-spp LIST]
 //           [--mis-spp LIST] [--denoised-spp LIST] [--denoised-mis-spp LIST]
@@ -59,7 +59,7 @@
 //                    (d) draws (a)'s random numbers, (e) (c)'s (with screen-ordered points, the
 //                    default, (c) keeps its random ones and (e) takes screen-ordered ones: below).
 // Sample points (screen_order.hpp): by default the per-pixel points of every method but (c) (the
-// lattice rotation of (a), (a+)'s first call, (b) and (d), with shadow_options::stratified_rotation;
+// lattice rotation of (a), (a+)'s first call, (b) and (d), with shadow_sampling::stratified_rotation;
 // each iteration's light point, lobe choice and lobe point of (e)) come from a screen-space
 // ordering of scrambled Sobol points, so that neighbouring pixels' points are stratified together;
 // each pixel's point stays uniform, so that every Monte Carlo sum keeps its expectation, and the
@@ -68,8 +68,8 @@
 // --pixel-points random: independent random numbers per pixel everywhere (the example before the
 // ordering: its output byte for byte).
 // With --lobes 2 or --lobes cosine, (a), (a+), (b) and (d) take their analytic part from the opt-in
-// two-lobe GGX table (ltc::analytic_lobes::two) or the table of an LTC and the cosine
-// (ltc::analytic_lobes::cosine_lobe, the table of ltc::shade_polygon_light's default), and the
+// two-lobe GGX table (ltc::ggx::two_lobes) or the table of an LTC and the cosine
+// (ltc::ggx::ltc_and_cosine, ltc::shade's default model), and the
 // samples of (a), (a+) and (d) follow that table's first, or only, LTC; (c), (e) and the reference do not change.
 // "spp" is K for (a), (a+), (b) and (d) and the iterations of (c) and (e): per pixel, (a), (b) and
 // (d) cast up to K shadow rays, (a+) K0, or K0 + K where the first K0 disagree, (c) and (e) up to K
@@ -185,9 +185,9 @@ int main(int argc, char** argv) {
     std::printf("%d x %d pixels (%zu floor: %zu dielectric, %zu gold; %zu occluder), %u thread%s\n", W, H,
                 floor_pixels, floor_pixels - gold_pixels, gold_pixels, occluder_pixels, opt.threads,
                 opt.threads == 1 ? "" : "s");
-    if (opt.lobes == ltc::analytic_lobes::two)
+    if (opt.lobes == analytic_model::two_lobes)
         std::printf("(a), (a+), (b), (d): the analytic part from the two-lobe GGX table (--lobes 2)\n");
-    if (opt.lobes == ltc::analytic_lobes::cosine_lobe)
+    if (opt.lobes == analytic_model::ltc_and_cosine)
         std::printf("(a), (a+), (b), (d): the analytic part from the table of an LTC and the cosine (--lobes cosine)\n");
 
     // The reference: (c) with its own seeds.

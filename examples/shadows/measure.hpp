@@ -51,7 +51,7 @@ struct method_image {
 /// filter (file comment) over up to max_runs runs (1: the reference, the second seeds). With a
 /// label: its progress on stderr.
 inline method_image render_method(const scene& s, const tracer& tr, const std::vector<pixel_hit>& hits, int W, int H,
-                                  unsigned threads, method which, int spp, std::uint64_t seed, ltc::analytic_lobes lobes,
+                                  unsigned threads, method which, int spp, std::uint64_t seed, analytic_model lobes,
                                   const filter_settings& filter, bool screen_points, int max_runs = 5,
                                   const char* label = nullptr) {
     const std::size_t count = static_cast<std::size_t>(W) * H;

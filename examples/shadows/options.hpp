@@ -5,7 +5,7 @@
 #include "common/cli.hpp"
 #include "filter_settings.hpp"
 
-#include <ltc/shading/shadowed_polygon_light.hpp>
+#include "shade_ratio.hpp"  // analytic_model
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +29,7 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     filter_settings filter;
     bool screen_points = true;   // every method but (c) and the reference: screen-ordered points (screen_order.hpp)
     int reference_spp = 4096;  // (c)'s iterations for the reference
-    ltc::analytic_lobes lobes = ltc::analytic_lobes::one;  // (a), (a+), (b), (d): the analytic part's table
+    analytic_model lobes = analytic_model::one_lobe;  // (a), (a+), (b), (d): the analytic part's model
 };
 
 inline void print_help(const char* argv0) {
@@ -43,7 +43,7 @@ inline void print_help(const char* argv0) {
         "\n"
         "Renders a tiled GGX floor (dielectric and gold tiles) and two grey occluders lit by one quad\n"
         "light, with shadows traced by Embree, six ways: (a) LTC + ratio-estimator shadows\n"
-        "(ltc::shade_polygon_light_shadowed), K samples in all split between the LTC restricted to\n"
+        "(ltc::shade_shadowed), K samples in all split between the LTC restricted to\n"
         "the light and the light's area, MIS-combined; (a+) the same, stopping after K0 = min(K, 4) samples\n"
         "where they all agree (lit or in umbra), else K more; (b) the same ratio sampling the light's\n"
         "area; (c) plain Monte Carlo with MIS (one GGX-or-cosine and one light sample per\n"
@@ -93,9 +93,9 @@ inline void print_help(const char* argv0) {
         "                      (c)'s and the reference's are random\n"
         "  --reference-spp N   iterations of the reference (default 4096)\n"
         "  --lobes 1|2|cosine  the ratio methods' analytic, unshadowed part from the one-lobe GGX table\n"
-        "                      (default, as ltc::shadow_options'), the two-lobe table\n"
-        "                      (ltc::analytic_lobes::two) or the table of an LTC and the cosine\n"
-        "                      (ltc::analytic_lobes::cosine_lobe, ltc::shade_polygon_light's); the samples of\n"
+        "                      (default: ltc::ggx::one_lobe), the two-lobe table\n"
+        "                      (ltc::ggx::two_lobes) or the table of an LTC and the cosine\n"
+        "                      (ltc::ggx::ltc_and_cosine, ltc::shade's default); the samples of\n"
         "                      (a), (a+) and (d) follow that table's first, or only, LTC; (c), (e) and\n"
         "                      the reference do not change\n"
         "  --threads K         worker threads (default: all hardware threads); the images do not\n"
@@ -141,9 +141,9 @@ inline int parse_args(int argc, char** argv, options& o) {
         if (list != nullptr) return parse_list(v.text, 1 << 20, *list) ? option_status::taken : option_status::bad;
         if (a == "--lobes") {
             if (std::string(v.text) == "cosine")
-                o.lobes = ltc::analytic_lobes::cosine_lobe;
+                o.lobes = analytic_model::ltc_and_cosine;
             else if (v.integer_in(1, 2))
-                o.lobes = v.number == 2 ? ltc::analytic_lobes::two : ltc::analytic_lobes::one;
+                o.lobes = v.number == 2 ? analytic_model::two_lobes : analytic_model::one_lobe;
             else
                 return option_status::bad;
             return option_status::taken;

@@ -1,6 +1,6 @@
 // shadows/shade_ratio.hpp -- the methods' names, and the pixels of every method: (a), (a+), (b)
 // and (d) (before its filter: denoise.hpp) here, (c) and (e) in shade_mis.hpp. (a), (a+) and (b):
-// ltc::shade_polygon_light_shadowed (ltc/shading/shadowed_polygon_light.hpp), the ratio estimator
+// ltc::shade_shadowed<Model> (ltc/shading/shade_shadowed.hpp), the ratio estimator
 // of Heitz, Hill and McGuire 2018: the analytic, unshadowed LTC shading times the ratio of two
 // Monte Carlo estimates over the same K samples, of the shadowed and of the unshadowed integrand,
 // per term (specular, diffuse); (d) keeps (a)'s estimates for its filter (each term's two sums
@@ -18,7 +18,7 @@
 //   (b)  K points uniform over the light's area, shared by both terms: up to K rays.
 // All on a rank-1 lattice shifted by a per-pixel rotation (Cranley-Patterson), so that the
 // lattice's structured error becomes noise: by default screen-ordered (ltc::screen_point with
-// shadow_options::stratified_rotation: neighbouring pixels' lattices stratified together;
+// shadow_sampling::stratified_rotation: neighbouring pixels' lattices stratified together;
 // screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
 // Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp); for (d) with
 // --filter-radius penumbra, closest-hit queries that also give each occluded ray's blocker
@@ -32,7 +32,10 @@
 #include "tracer.hpp"
 
 #include <ltc/reference/splitmix64.hpp>
-#include <ltc/shading/shadowed_polygon_light.hpp>
+#include <ltc/shading/ggx_models.hpp>
+#include <ltc/shading/lights/polygon_light.hpp>
+#include <ltc/shading/shade_shadowed.hpp>
+#include <ltc/shading/surface.hpp>
 
 #include <glm/glm.hpp>
 
@@ -74,16 +77,21 @@ inline const char* method_label(method m) {
 
 constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
 
+/// The material model of the ratio methods' analytic part (--lobes): ltc::ggx::one_lobe,
+/// ltc::ggx::two_lobes or ltc::ggx::ltc_and_cosine.
+enum class analytic_model { one_lobe, two_lobes, ltc_and_cosine };
+
 /// One call of the library at the pixel: K samples by `sampler`, the lattice rotated at random or,
 /// given screen-ordered points, by the pixel's point of stream 0 with stratified_rotation (the
-/// neighbours' lattices stratified together: ltc/shading/shadowed_polygon_light.hpp).
-inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, const tracer& tr, const pixel_hit& h,
-                                                               ltc::shadow_sampler sampler, int K, ltc::analytic_lobes lobes,
-                                                               ltc::ground_truth::splitmix64& rng,
-                                                               const pixel_points* points = nullptr,
-                                                               bool record_blockers = false) {
+/// neighbours' lattices stratified together: ltc/shading/shade_shadowed.hpp), the analytic part
+/// by `model`.
+inline ltc::shadowed_polygon_light_result<float> shade_shadowed_at(const scene& s, const tracer& tr, const pixel_hit& h,
+                                                                  ltc::shadow_sampler sampler, int K, analytic_model model,
+                                                                  ltc::ground_truth::splitmix64& rng,
+                                                                  const pixel_points* points = nullptr,
+                                                                  bool record_blockers = false) {
     const material& m = s.materials[static_cast<std::size_t>(h.material)];
-    ltc::shadow_options<float> options;
+    ltc::shadow_sampling<float> options;
     options.samples = static_cast<std::size_t>(K);
     const float rx = uniform_float(rng), ry = uniform_float(rng);
     options.rotation = glm::vec2(rx, ry);
@@ -92,11 +100,18 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed(const scene& s, 
         options.stratified_rotation = true;
     }
     options.sampler = sampler;
-    options.lobes = lobes;
     const vec3 N = h.n;
+    const ltc::surface<float> surface{h.p, h.n, h.v, m.roughness, m.f0, m.albedo};
+    const auto light = ltc::polygon_light<float>::one_sided(s.light_vertices, 4, s.light_front, s.light_radiance);
     const auto shade_with = [&](const auto& callback) {
-        return ltc::shade_polygon_light_shadowed(h.p, h.n, h.v, m.roughness, m.f0, m.albedo, s.light_radiance,
-                                                 s.light_vertices, 4, ltc::sidedness::one_sided, callback, options);
+        switch (model) {
+            case analytic_model::two_lobes:
+                return ltc::shade_shadowed<ltc::ggx::two_lobes>(surface, light, callback, options);
+            case analytic_model::ltc_and_cosine:
+                return ltc::shade_shadowed<ltc::ggx::ltc_and_cosine>(surface, light, callback, options);
+            default:
+                return ltc::shade_shadowed<ltc::ggx::one_lobe>(surface, light, callback, options);
+        }
     };
     // Recording blockers: a first-hit callback (ltc::first_hit: one closest-hit query per ray instead
     // of an any-hit one), whose distances the library sums into the result's `blockers`.
@@ -118,7 +133,7 @@ inline bool agreed(const glm::vec3& ratio, const glm::vec3& unshadowed) {
 
 /// Radiance towards the camera at one pixel by (a), (a+) or (b) with K = spp samples.
 inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                                std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points,
+                                std::uint64_t seed, analytic_model lobes, const pixel_points& points,
                                 bool record_blockers = false) {
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
@@ -127,7 +142,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
     const ltc::shadowed_polygon_light_result<float> r =
-        shade_shadowed(s, tr, h, sampler, first, lobes, rng, &points, record_blockers);
+        shade_shadowed_at(s, tr, h, sampler, first, lobes, rng, &points, record_blockers);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
@@ -141,7 +156,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;
-    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed(s, tr, h, sampler, spp, lobes, rng);
+    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed_at(s, tr, h, sampler, spp, lobes, rng);
     const double w = static_cast<double>(first) / static_cast<double>(first + spp);
     out.radiance = w * out.radiance + (1.0 - w) * dvec3(more.ratio.specular + more.ratio.diffuse);
     out.rays += more.rays;
@@ -151,7 +166,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
 /// One pixel by any method, before (d)'s and (e)'s filter: K = spp samples for (a), (a+), (b) and
 /// (d), spp MIS iterations (one BRDF and one light sample each) for (c) and (e).
 inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                          std::uint64_t seed, ltc::analytic_lobes lobes, const pixel_points& points,
+                          std::uint64_t seed, analytic_model lobes, const pixel_points& points,
                           bool record_blockers = false) {
     if (which == method::mis || which == method::mis_denoised) return shade_mis(s, tr, h, spp, seed, points);
     return shade_ratio(s, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed, lobes,

@@ -3,8 +3,10 @@
 // an LTC and the cosine (the default shading is bitwise the latter), point by point with each
 // horizon-clipping strategy and in batches (17 points, and a quad light 17 times over one point,
 // with each instruction set); with shadows (the ratio estimator and its two sums per term, any
-// sample plan, any analytic part, a boolean or first-hit callback) every term, estimate and the
-// blockers' sums are finite and in range; and the batch API of the integrals (fuzz_batch.hpp:
+// sample plan, any analytic part, a boolean or first-hit callback, by shade_polygon_light_shadowed
+// and by ltc::shade_shadowed<Model> with a light one-sided by emission normal) every term,
+// estimate and the blockers' sums are finite and in range, and shade_shadowed's analytic part is
+// ltc::shade<Model>'s bit for bit; and the batch API of the integrals (fuzz_batch.hpp:
 // batches of 1..19 quads or n-gons) agrees with the scalar path.
 // Per input one of three parts (the point's shading and shadows, batch shading, the batch
 // integrals), and within it one horizon-clipping strategy, or one instruction set, table (one
@@ -12,8 +14,8 @@
 // fuzz_batch.hpp's one shape, policy, instruction set and sidedness (fuzzed bytes): over a run
 // they cover every combination, at a fraction of the cost per input of running them all.
 // Input: fuzz_common.hpp's read_scene and read_shading_point, the part's byte, then check_batch's
-// input, or a byte of choices (and the shadow options). Build and run: tests/fuzz/run.sh
-// (README.md there).
+// input, or a byte of choices (and the shadow options, then the emission normal's side). Build
+// and run: tests/fuzz/run.sh (README.md there).
 #include "fuzz_batch.hpp"
 #include "fuzz_common.hpp"
 
@@ -23,7 +25,11 @@
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
+#include <ltc/shading/lights/light_error.hpp>
+#include <ltc/shading/lights/polygon_light.hpp>
 #include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/shade.hpp>
+#include <ltc/shading/shade_shadowed.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 
@@ -33,6 +39,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <vector>
@@ -155,8 +162,71 @@ void check_point_batch(const std::vector<glm::vec<3, T>>& v, const shading_point
     res.require_finite("batch GGX shading");
 }
 
-// Shadowed shading (the ratio estimator): any sample plan, one or two lobes; the visibility
-// alternates, so that both of each ratio's sums see samples.
+// The outputs of the shadowed shading: every term, estimate and the blockers' sums finite and in
+// range (blockers only with a first-hit callback).
+template <typename T>
+void require_shadowed_in_range(const ltc::shadowed_polygon_light_result<T>& r, bool first_hit) {
+    using vec3 = glm::vec<3, T>;
+    require_finite(r.blockers.ratio_sum, "blockers' ratio sum");
+    require_finite(ltc::penumbra_width(T(1), r.blockers), "penumbra width");
+    if (!(r.blockers.ratio_sum >= T(0) && r.blockers.occluded <= T(r.rays) &&
+          (first_hit || r.blockers.occluded == T(0)))) {
+        std::fprintf(stderr, "blockers out of range: sum %g over %g occluded of %zu queries\n",
+                     static_cast<double>(r.blockers.ratio_sum), static_cast<double>(r.blockers.occluded), r.rays);
+        std::abort();
+    }
+    for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {
+        require_finite(t->specular, "shadowed specular");
+        require_finite(t->diffuse, "shadowed diffuse");
+    }
+    for (const auto* e : {&r.specular_estimates, &r.specular_fresnel_estimates, &r.diffuse_estimates}) {
+        require_finite(e->visible, "shadowed estimate");
+        require_finite(e->total, "unshadowed estimate");
+        require_finite(e->analytic, "analytic estimate");
+    }
+    // The corrected specular term, of the pixel's own estimates (its filter-free use).
+    require_finite(ltc::corrected_specular(vec3(T(0.04)), vec3(T(1)), r.specular_estimates.analytic,
+                                           r.specular_fresnel_estimates.analytic, r.specular_estimates,
+                                           r.specular_fresnel_estimates),
+                   "corrected specular");
+}
+
+// ltc::shade_shadowed<Model> with the light one-sided towards its vector area (or away from it,
+// `back`; where the light accepts the normal: not zero, finite, off the polygon's plane): in range
+// as above, and, for the 3..8 vertices it shades, its analytic part ltc::shade<Model>'s bits.
+template <typename Model, typename T>
+void check_shade_shadowed(const scene<T>& sc, const shading_point<T>& s, const ltc::shadow_sampling<T>& o, bool back,
+                          bool first_hit, T hit_fraction) {
+    using vec3 = glm::vec<3, T>;
+    const std::size_t n = sc.v.size();
+    vec3 normal = n >= 3 ? ltc::detail::vector_area_x2(sc.v.data(), n) : vec3(T(0));
+    if (normal == vec3(T(0))) normal = vec3(T(0), T(0), T(1));
+    if (back) normal = -normal;
+    const ltc::surface<T> surface{s.P, s.N, s.V, s.roughness, vec3(T(0.04)), vec3(T(0.5))};
+    std::size_t queries = 0;
+    const auto alternate = [&](const vec3&, const vec3&, T) { return (queries++ & 1u) == 0; };
+    const auto occluder_at = [&](const vec3&, const vec3&, T distance) {
+        return (queries++ & 1u) == 0 ? std::numeric_limits<T>::infinity() : distance * hit_fraction;
+    };
+    try {
+        const auto light = ltc::polygon_light<T>::one_sided(sc.v.data(), n, normal, vec3(T(1)));
+        const auto r = first_hit ? ltc::shade_shadowed<Model>(surface, light, ltc::first_hit(occluder_at), o)
+                                 : ltc::shade_shadowed<Model>(surface, light, alternate, o);
+        require_shadowed_in_range(r, first_hit);
+        const ltc::shading_result<T> want = ltc::shade<Model>(surface, light);
+        if (n >= 3 && n <= 8 && !(std::memcmp(&r.unshadowed.specular, &want.specular, sizeof(vec3)) == 0 &&
+                                  std::memcmp(&r.unshadowed.diffuse, &want.diffuse, sizeof(vec3)) == 0)) {
+            std::fprintf(stderr, "shade_shadowed's analytic part differs from ltc::shade's\n");
+            std::abort();
+        }
+    } catch (const ltc::invalid_light&) {
+        // a normal the light refuses (its area overflows, or lies in its plane by rounding)
+    }
+}
+
+// Shadowed shading (the ratio estimator): any sample plan, any analytic part, by the deprecated
+// name (the old sidedness rule) and by ltc::shade_shadowed<Model>; the visibility alternates, so
+// that both of each ratio's sums see samples.
 template <typename T>
 void check_shadowed(FuzzedDataProvider& in, const scene<T>& sc, const shading_point<T>& s) {
     using vec3 = glm::vec<3, T>;
@@ -192,28 +262,22 @@ void check_shadowed(FuzzedDataProvider& in, const scene<T>& sc, const shading_po
                                                  sc.v.data(), sc.v.size(), ltc::sidedness::one_sided, callback, o);
     };
     const auto r = first_hit ? shade(ltc::first_hit(occluder_at)) : shade(alternate);
-    require_finite(r.blockers.ratio_sum, "blockers' ratio sum");
-    require_finite(ltc::penumbra_width(T(1), r.blockers), "penumbra width");
-    if (!(r.blockers.ratio_sum >= T(0) && r.blockers.occluded <= T(r.rays) &&
-          (first_hit || r.blockers.occluded == T(0)))) {
-        std::fprintf(stderr, "blockers out of range: sum %g over %g occluded of %zu queries\n",
-                     static_cast<double>(r.blockers.ratio_sum), static_cast<double>(r.blockers.occluded), r.rays);
-        std::abort();
+    require_shadowed_in_range(r, first_hit);
+    // The same plan through ltc::shade_shadowed<Model>, the model by o.lobes, the light one-sided
+    // towards a side of its vector area (the light then walks the vertices reversed or not).
+    const ltc::shadow_sampling<T>& plan = o;
+    const bool back = in.ConsumeBool();
+    switch (o.lobes) {
+        case ltc::analytic_lobes::two:
+            check_shade_shadowed<ltc::ggx::two_lobes>(sc, s, plan, back, first_hit, hit_fraction);
+            break;
+        case ltc::analytic_lobes::cosine_lobe:
+            check_shade_shadowed<ltc::ggx::ltc_and_cosine>(sc, s, plan, back, first_hit, hit_fraction);
+            break;
+        default:
+            check_shade_shadowed<ltc::ggx::one_lobe>(sc, s, plan, back, first_hit, hit_fraction);
+            break;
     }
-    for (const auto* t : {&r.unshadowed, &r.ratio, &r.unbiased}) {
-        require_finite(t->specular, "shadowed specular");
-        require_finite(t->diffuse, "shadowed diffuse");
-    }
-    for (const auto* e : {&r.specular_estimates, &r.specular_fresnel_estimates, &r.diffuse_estimates}) {
-        require_finite(e->visible, "shadowed estimate");
-        require_finite(e->total, "unshadowed estimate");
-        require_finite(e->analytic, "analytic estimate");
-    }
-    // The corrected specular term, of the pixel's own estimates (its filter-free use).
-    require_finite(ltc::corrected_specular(vec3(T(0.04)), vec3(T(1)), r.specular_estimates.analytic,
-                                           r.specular_fresnel_estimates.analytic, r.specular_estimates,
-                                           r.specular_fresnel_estimates),
-                   "corrected specular");
 }
 
 template <typename T>
