@@ -74,4 +74,5 @@
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/batch_cosine_lobe.hpp>
+#include <ltc/shading/shade_shadowed.hpp>
 #include <ltc/shading/shadowed_polygon_light.hpp>
