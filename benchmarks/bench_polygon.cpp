@@ -111,6 +111,32 @@ void BM_library(benchmark::State& state) {
     });
 }
 
+// The README's first integral, transformed<clamped_cosine<float>> with the default edge policy,
+// through each documented entry point: integrate(q, 4) (two-sided by default) and
+// integrate(q, 4, sidedness), next to BM_reference_shader so that their ratio comes from one run.
+enum class entry { two_arguments, two_sided };
+
+template <entry E>
+float readme_integral(const typed_config<float>& c) {
+    const auto d = ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(c.m_inv);
+    if constexpr (E == entry::two_arguments) return d.integrate(c.quad, 4);
+    if constexpr (E == entry::two_sided) return d.integrate(c.quad, 4, ltc::sidedness::two_sided);
+}
+
+template <entry E>
+void BM_readme_integral(benchmark::State& state) {
+    const auto& cs = typed_configs<float>();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(readme_integral<E>(cs[i++ & 4095]));
+    state.SetItemsProcessed(state.iterations());
+    report_errors(state, [](const config& c) {
+        typed_config<float> t;
+        t.m_inv = glm::mat3(c.m_inv);
+        for (int k = 0; k < 4; ++k) t.quad[k] = glm::vec3(c.quad[k]);
+        return static_cast<double>(readme_integral<E>(t));
+    });
+}
+
 // Cost of the steps of the library's quad path: everything but the fit of theta / sin(theta),
 // with a policy whose factor is 1 (transform, clip, normalization, the edges' cosines and cross
 // products, the branch on the sign of the cosine), against the full path with each policy.
@@ -231,6 +257,8 @@ BENCHMARK_TEMPLATE(BM_ggx_shading, float, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_ggx_shading, float, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_ggx_shading, double, ltc::edge_policy::exact);
 BENCHMARK(BM_reference_shader);
+BENCHMARK_TEMPLATE(BM_readme_integral, entry::two_arguments);
+BENCHMARK_TEMPLATE(BM_readme_integral, entry::two_sided);
 BENCHMARK(BM_step_without_fit);
 BENCHMARK_TEMPLATE(BM_step_edges, reference_edge);
 BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::exact);

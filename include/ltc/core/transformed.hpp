@@ -217,13 +217,15 @@ class transformed {
         return det_inv_ < T(0) ? -s : s;
     }
 
-    /// Integral of D over the spherical polygon subtended by vertices[0..n), whatever the winding.
-    LTC_HOST_DEVICE T integrate(const vec3* vertices, std::size_t n) const {
-        return std::abs(integrate_signed(vertices, n));
-    }
-
-    /// Integral seen by a one-sided (max(0, signed)) or two-sided (|signed|) emitter.
-    LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n, sidedness s) const {
+    /// Integral of D over the spherical polygon subtended by vertices[0..n), as seen by a one-sided
+    /// (max(0, signed)) or two-sided (|signed|) emitter (ltc/core/sidedness.hpp).
+    /// s defaults to two_sided: integrate(v, n) is the integral of D over the polygon whatever its
+    /// winding, the mathematical quantity of eq. (3); every distribution's integrate() has the same
+    /// default, while the shading functions, where a wrong guess would light the back of a light,
+    /// take no default. One function, so that integrate(v, n) is integrate(v, n, two_sided): the
+    /// same inlined path (the quad path for n = 4) and the same bits.
+    LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n,
+                                           sidedness s = sidedness::two_sided) const {
         // Two-sided: |integral| does not need the sign of |M^-1| (nor, when the compiler sees s, its
         // determinant).
         const T s_o = Dist::signed_integral(detail::transformed_vertices<T>{m_inv_, vertices}, n);
