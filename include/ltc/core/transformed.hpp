@@ -11,6 +11,7 @@
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
 #include <ltc/core/sidedness.hpp>
+#include <ltc/core/detail/defined_later.hpp>
 
 #include <glm/glm.hpp>
 
@@ -26,14 +27,6 @@ LTC_NAMESPACE_BEGIN
 /// or checked_from_inverse() includes (ltc/ltc.hpp does): <stdexcept> alone is larger to parse
 /// than the rest of this header, which the cheap factories never need.
 class invalid_transform;
-
-namespace detail {
-/// X, named through T so that its completeness is required only where a checked factory is used.
-template <typename X, typename T>
-struct defined_later {
-    using type = X;
-};
-}  // namespace detail
 
 namespace detail {
 
