@@ -3,6 +3,7 @@
 // the same 4096 random configurations (GGX-like M^-1, a quad crossing the horizon in ~half of
 // them) and reports ns per evaluation and, as counters, the maximum absolute and relative error
 // against the library's double-precision exact closed form.
+#include "bench_main.hpp"
 #include "configurations.hpp"
 #include "reference_shader.hpp"
 
@@ -273,4 +274,4 @@ BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::fp16_quadratic);
 BENCHMARK_TEMPLATE(BM_library, double, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library, double, ltc::edge_policy::polynomial);
 
-BENCHMARK_MAIN();
+LTC_BENCHMARK_MAIN();
