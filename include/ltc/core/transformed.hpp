@@ -2,7 +2,7 @@
 // supplement section 2): D(w) = D_o(M^-1 w / |M^-1 w|) |M^-1| / |M^-1 w|^3   (eq. 1).
 //
 //   ltc::transformed<ltc::clamped_cosine<float>> d = ...::from_inverse(m_inv);
-//   float e = d.integrate(vertices, n);   // eq. (3): D_o's closed form over M^-1 P
+//   float e = d.integrate(vertices, n);   // eq. (3): D_o's closed form over M^-1 P, two-sided
 //
 // GLM matrices are column-major: the paper's (row-major) M = [a 0 b; 0 c 0; d 0 1] is
 // glm::transpose(glm::mat3(a, 0, b, 0, c, 0, d, 0, 1)), i.e. glm::mat3 M; M[col][row].
@@ -212,11 +212,12 @@ class transformed {
 
     /// Integral of D over the spherical polygon subtended by vertices[0..n), as seen by a one-sided
     /// (max(0, signed)) or two-sided (|signed|) emitter (ltc/core/sidedness.hpp).
-    /// s defaults to two_sided: integrate(v, n) is the integral of D over the polygon whatever its
-    /// winding, the mathematical quantity of eq. (3); every distribution's integrate() has the same
-    /// default, while the shading functions, where a wrong guess would light the back of a light,
-    /// take no default. One function, so that integrate(v, n) is integrate(v, n, two_sided): the
-    /// same inlined path (the quad path for n = 4) and the same bits.
+    /// The default, decided here once: two_sided. integrate(v, n) is the integral of D over the
+    /// polygon whatever its winding, the quantity of eq. (3); the original distributions'
+    /// integrate() and core's other integrals (integrate_disk, ...) default alike. Shading takes no
+    /// default (ltc::shade: a light is one_sided or two_sided by construction): there a wrong guess
+    /// lights the back of a light. One function, so that integrate(v, n) is integrate(v, n,
+    /// two_sided): the same inlined path (the quad path for n = 4) and the same bits.
     LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n,
                                            sidedness s = sidedness::two_sided) const {
         // Two-sided: |integral| does not need the sign of |M^-1| (nor, when the compiler sees s, its
