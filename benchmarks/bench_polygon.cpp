@@ -3,6 +3,7 @@
 // the same 4096 random configurations (GGX-like M^-1, a quad crossing the horizon in ~half of
 // them) and reports ns per evaluation and, as counters, the maximum absolute and relative error
 // against the library's double-precision exact closed form.
+#include "bench_main.hpp"
 #include "configurations.hpp"
 #include "reference_shader.hpp"
 
@@ -108,6 +109,32 @@ void BM_library(benchmark::State& state) {
         t.m_inv = glm::mat<3, 3, T>(c.m_inv);
         for (int k = 0; k < 4; ++k) t.quad[k] = glm::vec<3, T>(c.quad[k]);
         return static_cast<double>(library<T, Policy>(t));
+    });
+}
+
+// The README's first integral, transformed<clamped_cosine<float>> with the default edge policy,
+// through each documented entry point: integrate(q, 4) (two-sided by default) and
+// integrate(q, 4, sidedness), next to BM_reference_shader so that their ratio comes from one run.
+enum class entry { two_arguments, two_sided };
+
+template <entry E>
+float readme_integral(const typed_config<float>& c) {
+    const auto d = ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(c.m_inv);
+    if constexpr (E == entry::two_arguments) return d.integrate(c.quad, 4);
+    if constexpr (E == entry::two_sided) return d.integrate(c.quad, 4, ltc::sidedness::two_sided);
+}
+
+template <entry E>
+void BM_readme_integral(benchmark::State& state) {
+    const auto& cs = typed_configs<float>();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(readme_integral<E>(cs[i++ & 4095]));
+    state.SetItemsProcessed(state.iterations());
+    report_errors(state, [](const config& c) {
+        typed_config<float> t;
+        t.m_inv = glm::mat3(c.m_inv);
+        for (int k = 0; k < 4; ++k) t.quad[k] = glm::vec3(c.quad[k]);
+        return static_cast<double>(readme_integral<E>(t));
     });
 }
 
@@ -231,6 +258,8 @@ BENCHMARK_TEMPLATE(BM_ggx_shading, float, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_ggx_shading, float, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_ggx_shading, double, ltc::edge_policy::exact);
 BENCHMARK(BM_reference_shader);
+BENCHMARK_TEMPLATE(BM_readme_integral, entry::two_arguments);
+BENCHMARK_TEMPLATE(BM_readme_integral, entry::two_sided);
 BENCHMARK(BM_step_without_fit);
 BENCHMARK_TEMPLATE(BM_step_edges, reference_edge);
 BENCHMARK_TEMPLATE(BM_step_edges, ltc::edge_policy::exact);
@@ -245,4 +274,4 @@ BENCHMARK_TEMPLATE(BM_library, float, ltc::edge_policy::fp16_quadratic);
 BENCHMARK_TEMPLATE(BM_library, double, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library, double, ltc::edge_policy::polynomial);
 
-BENCHMARK_MAIN();
+LTC_BENCHMARK_MAIN();

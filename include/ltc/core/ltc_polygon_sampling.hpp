@@ -11,8 +11,10 @@
 //   ltc::ltc_polygon_sampler<float> s(d, vertices, n);   // d: transformed<clamped_cosine<float>>
 //   ltc::polygon_sample<float> x = s.sample(u);           // x.pdf = d.eval(x.direction) / s.integral()
 //
-// The polygon: convex and planar, at most MaxVertices vertices (see the projected sampler for
-// the degenerate cases, which give an empty() sampler). M^-1 P is computed in T, and once more
+// The polygon: convex and planar, at most max_vertices (MaxVertices, 8 by default) vertices: a
+// precondition of the constructor (device code: it cannot throw), which checked() enforces by
+// throwing ltc::invalid_polygon (ltc/core/invalid_polygon.hpp). See the projected sampler for the
+// degenerate cases, which give an empty() sampler. M^-1 P is computed in T, and once more
 // in the projected sampler's wider type where that sampler widens its fan (a tiny or grazing
 // M^-1 P in float): then I_D carries no rounding of M^-1 p_i in T.
 #pragma once
@@ -21,6 +23,7 @@
 #include <ltc/core/clamped_cosine.hpp>
 #include <ltc/core/projected_solid_angle_sampling.hpp>
 #include <ltc/core/transformed.hpp>
+#include <ltc/core/detail/polygon_check.hpp>
 #include <ltc/detail/math.hpp>
 
 #include <glm/glm.hpp>
@@ -36,10 +39,15 @@ class ltc_polygon_sampler {
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;
     using mat3 = glm::mat<3, 3, T>;
+    /// The capacity: the most vertices a polygon may have, the MaxVertices template argument (a
+    /// larger one holds larger polygons). n <= max_vertices is a precondition of the constructor,
+    /// which gives an empty() sampler above it (it cannot throw: device code); checked() throws.
+    static constexpr std::size_t max_vertices = MaxVertices;
 
     LTC_HOST_DEVICE ltc_polygon_sampler() = default;
 
-    /// vertices[0..n) in D's frame (the shading frame for the GGX table's lobes).
+    /// vertices[0..n) in D's frame (the shading frame for the GGX table's lobes). n > max_vertices
+    /// (a precondition) gives an empty() sampler whose integral() is 0, not D's integral.
     template <typename Policy>
     LTC_HOST_DEVICE ltc_polygon_sampler(const transformed<clamped_cosine<T, Policy>>& d, const vec3* vertices,
                                         std::size_t n)
@@ -57,6 +65,20 @@ class ltc_polygon_sampler {
         }
     }
 
+    /// Like the constructor, but throws ltc::invalid_polygon (ltc/core/invalid_polygon.hpp) for
+    /// n > max_vertices, n < 3 or a vertex not finite: input that is no polygon it can hold. (A
+    /// polygon below D's horizon, or seen edge-on, still gives an empty() sampler.)
+    template <typename Policy>
+    static ltc_polygon_sampler checked(const transformed<clamped_cosine<T, Policy>>& d, const vec3* vertices,
+                                       std::size_t n) {
+        detail::require_polygon("ltc::ltc_polygon_sampler", vertices, n, max_vertices);
+        return ltc_polygon_sampler(d, vertices, n);
+    }
+
+    /// No direction to sample: the polygon holds none of D's support, M is too degenerate to
+    /// sample through (integral() may be > 0 then), or a precondition is broken (integral() 0);
+    /// sample() has pdf 0 and pdf() is 0. Every sample of a sampler that is not empty() has
+    /// pdf() > 0, the pdf it carries.
     LTC_HOST_DEVICE bool empty() const { return !usable_; }
 
     /// I_D: the integral of D over the polygon (the clamped cosine's over M^-1 P, clipped; also

@@ -9,12 +9,14 @@
 //
 // A convex polygon (a fan from vertex 0, triangles chosen by area; u.x is rescaled inside the
 // chosen triangle, so one 2D sample serves and stratification is kept). Any scale: coordinates are
-// rescaled by exact powers of two. n < 3, n > MaxVertices or zero area give an empty() sampler,
-// whose samples are vertex 0 (the origin for n = 0) with density 0.
+// rescaled by exact powers of two. n < 3, n > max_vertices (MaxVertices, 8 by default; checked()
+// throws ltc::invalid_polygon above it) or zero area give an empty() sampler, whose samples are
+// vertex 0 (the origin for n = 0) with density 0.
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
+#include <ltc/core/detail/polygon_check.hpp>
 
 #include <glm/glm.hpp>
 
@@ -29,6 +31,10 @@ class polygon_area_sampler {
   public:
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;
+    /// The capacity: the most vertices a polygon may have, the MaxVertices template argument (a
+    /// larger one holds larger polygons). n <= max_vertices is a precondition of the constructor,
+    /// which gives an empty() sampler above it (it cannot throw: device code); checked() throws.
+    static constexpr std::size_t max_vertices = MaxVertices;
 
     LTC_HOST_DEVICE polygon_area_sampler() = default;
 
@@ -60,6 +66,14 @@ class polygon_area_sampler {
         n_ = n;
         scaled_area_ = total;
         normal_ = normal / l;
+    }
+
+    /// Like the constructor, but throws ltc::invalid_polygon (ltc/core/invalid_polygon.hpp) for
+    /// n > max_vertices, n < 3 or a vertex not finite: input that is no polygon it can hold. (A
+    /// polygon of zero area still gives an empty() sampler.)
+    static polygon_area_sampler checked(const vec3* vertices, std::size_t n) {
+        detail::require_polygon("ltc::polygon_area_sampler", vertices, n, max_vertices);
+        return polygon_area_sampler(vertices, n);
     }
 
     LTC_HOST_DEVICE bool empty() const { return !(scaled_area_ > T(0)); }

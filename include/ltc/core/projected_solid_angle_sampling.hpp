@@ -36,14 +36,17 @@
 // sixteenth of its area; the tests found it.)
 //
 // Preconditions and degenerate input. A convex planar polygon (light polygons are), any scale,
-// either winding, at most MaxVertices vertices. n < 3, n > MaxVertices, a vertex at the origin
-// or a polygon wholly below the horizon (or within rounding of it) give an empty() sampler:
-// projected_solid_angle() 0, pdf() 0, and sample() the normal (0, 0, 1) with pdf 0.
+// either winding, at most max_vertices (MaxVertices, 8 by default) vertices: checked() throws
+// ltc::invalid_polygon above it. n < 3, n > max_vertices, a vertex at the origin or a polygon
+// wholly below the horizon (or within rounding of it) give an empty() sampler:
+// projected_solid_angle() 0, pdf() 0, and sample() the normal (0, 0, 1) with pdf 0; every sample
+// of a sampler that is not empty() has pdf() > 0, the pdf it carries.
 #pragma once
 
 #include <ltc/config.hpp>
 #include <ltc/core/horizon_clip.hpp>
 #include <ltc/detail/math.hpp>
+#include <ltc/core/detail/polygon_check.hpp>
 #include <ltc/core/detail/projected_triangle.hpp>
 #include <ltc/detail/wider.hpp>
 
@@ -133,7 +136,11 @@ class projected_polygon_sampler {
   public:
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;
-    static constexpr std::size_t capacity = clipped_capacity(MaxVertices);
+    /// The capacity: the most vertices a polygon may have, the MaxVertices template argument (a
+    /// larger one holds larger polygons). n <= max_vertices is a precondition of the constructor,
+    /// which gives an empty() sampler above it (it cannot throw: device code); checked() throws.
+    static constexpr std::size_t max_vertices = MaxVertices;
+    static constexpr std::size_t capacity = clipped_capacity(MaxVertices);  // of the clipped polygon
 
     LTC_HOST_DEVICE projected_polygon_sampler() = default;
 
@@ -148,6 +155,14 @@ class projected_polygon_sampler {
     LTC_HOST_DEVICE projected_polygon_sampler(const vec3* vertices, std::size_t n, const glm::mat<3, 3, T>& m_inv,
                                               const vec3* raw) {
         init(vertices, n, &m_inv, raw);
+    }
+
+    /// Like the first constructor, but throws ltc::invalid_polygon (ltc/core/invalid_polygon.hpp)
+    /// for n > max_vertices, n < 3 or a vertex not finite: input that is no polygon it can hold.
+    /// (A polygon below the horizon or seen edge-on still gives an empty() sampler.)
+    static projected_polygon_sampler checked(const vec3* vertices, std::size_t n) {
+        detail::require_polygon("ltc::projected_polygon_sampler", vertices, n, max_vertices);
+        return projected_polygon_sampler(vertices, n);
     }
 
     LTC_HOST_DEVICE bool empty() const { return !(total_ > T(0)); }

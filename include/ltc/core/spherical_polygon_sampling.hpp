@@ -2,7 +2,7 @@
 // polygon seen from the origin, as a sampler trio (sample / pdf / invert) for host and device
 // code (fixed capacity, no heap, no exceptions), in float or double.
 //
-//   const ltc::spherical_polygon_sampler<float> s(vertices, n);   // n <= 8, any scale and winding
+//   const ltc::spherical_polygon_sampler<float> s(vertices, n);   // n <= max_vertices (8), any scale and winding
 //   glm::vec3 w = s.sample(u);    // u in [0, 1)^2; density s.pdf(w) = 1 / s.solid_angle() inside
 //   glm::vec2 v = s.invert(w);    // v == u up to rounding
 //
@@ -31,6 +31,7 @@
 #include <ltc/config.hpp>
 #include <ltc/core/solid_angle.hpp>  // triangle_solid_angle
 #include <ltc/core/spherical_triangle_sampling.hpp>
+#include <ltc/core/detail/polygon_check.hpp>
 #include <ltc/detail/math.hpp>
 #include <ltc/detail/wider.hpp>
 
@@ -59,12 +60,16 @@ class spherical_polygon_sampler {
   public:
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;
+    /// The capacity: the most vertices a polygon may have, the MaxVertices template argument (a
+    /// larger one holds larger polygons). n <= max_vertices is a precondition of the constructor,
+    /// which gives an empty() sampler above it (it cannot throw: device code); checked() throws.
+    static constexpr std::size_t max_vertices = MaxVertices;
 
     /// An empty sampler.
     LTC_HOST_DEVICE spherical_polygon_sampler() = default;
 
     /// vertices[0..n): a convex planar polygon (any scale, either winding) whose plane misses the
-    /// origin. n < 3, n > MaxVertices, a vertex at the origin, non-finite vertices or zero solid
+    /// origin. n < 3, n > max_vertices, a vertex at the origin, non-finite vertices or zero solid
     /// angle (the polygon seen edge-on) give an empty sampler.
     LTC_HOST_DEVICE spherical_polygon_sampler(const vec3* vertices, std::size_t n) {
         if (n < 3 || n > MaxVertices) return;
@@ -101,6 +106,14 @@ class spherical_polygon_sampler {
             const T k = T(3 * n_vertices_ - 6);
             if (T(4) * k * k * e * e > omega * omega && e * e * fan_chords() > omega * omega) widen(vertices);
         }
+    }
+
+    /// Like the constructor, but throws ltc::invalid_polygon (ltc/core/invalid_polygon.hpp) for
+    /// n > max_vertices, n < 3 or a vertex not finite: input that is no polygon it can hold. (A
+    /// polygon seen edge-on still gives an empty() sampler.)
+    static spherical_polygon_sampler checked(const vec3* vertices, std::size_t n) {
+        detail::require_polygon("ltc::spherical_polygon_sampler", vertices, n, max_vertices);
+        return spherical_polygon_sampler(vertices, n);
     }
 
     /// Solid angle of the polygon (the sum of its fan triangles'); 0 when empty().

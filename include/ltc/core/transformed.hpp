@@ -2,7 +2,7 @@
 // supplement section 2): D(w) = D_o(M^-1 w / |M^-1 w|) |M^-1| / |M^-1 w|^3   (eq. 1).
 //
 //   ltc::transformed<ltc::clamped_cosine<float>> d = ...::from_inverse(m_inv);
-//   float e = d.integrate(vertices, n);   // eq. (3): D_o's closed form over M^-1 P
+//   float e = d.integrate(vertices, n);   // eq. (3): D_o's closed form over M^-1 P, two-sided
 //
 // GLM matrices are column-major: the paper's (row-major) M = [a 0 b; 0 c 0; d 0 1] is
 // glm::transpose(glm::mat3(a, 0, b, 0, c, 0, d, 0, 1)), i.e. glm::mat3 M; M[col][row].
@@ -11,6 +11,7 @@
 #include <ltc/config.hpp>
 #include <ltc/detail/math.hpp>
 #include <ltc/core/sidedness.hpp>
+#include <ltc/core/detail/defined_later.hpp>
 
 #include <glm/glm.hpp>
 
@@ -26,14 +27,6 @@ LTC_NAMESPACE_BEGIN
 /// or checked_from_inverse() includes (ltc/ltc.hpp does): <stdexcept> alone is larger to parse
 /// than the rest of this header, which the cheap factories never need.
 class invalid_transform;
-
-namespace detail {
-/// X, named through T so that its completeness is required only where a checked factory is used.
-template <typename X, typename T>
-struct defined_later {
-    using type = X;
-};
-}  // namespace detail
 
 namespace detail {
 
@@ -217,13 +210,16 @@ class transformed {
         return det_inv_ < T(0) ? -s : s;
     }
 
-    /// Integral of D over the spherical polygon subtended by vertices[0..n), whatever the winding.
-    LTC_HOST_DEVICE T integrate(const vec3* vertices, std::size_t n) const {
-        return std::abs(integrate_signed(vertices, n));
-    }
-
-    /// Integral seen by a one-sided (max(0, signed)) or two-sided (|signed|) emitter.
-    LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n, sidedness s) const {
+    /// Integral of D over the spherical polygon subtended by vertices[0..n), as seen by a one-sided
+    /// (max(0, signed)) or two-sided (|signed|) emitter (ltc/core/sidedness.hpp).
+    /// The default, decided here once: two_sided. integrate(v, n) is the integral of D over the
+    /// polygon whatever its winding, the quantity of eq. (3); the original distributions'
+    /// integrate() and core's other integrals (integrate_disk, ...) default alike. Shading takes no
+    /// default (ltc::shade: a light is one_sided or two_sided by construction): there a wrong guess
+    /// lights the back of a light. One function, so that integrate(v, n) is integrate(v, n,
+    /// two_sided): the same inlined path (the quad path for n = 4) and the same bits.
+    LTC_HOST_DEVICE LTC_INLINE T integrate(const vec3* vertices, std::size_t n,
+                                           sidedness s = sidedness::two_sided) const {
         // Two-sided: |integral| does not need the sign of |M^-1| (nor, when the compiler sees s, its
         // determinant).
         const T s_o = Dist::signed_integral(detail::transformed_vertices<T>{m_inv_, vertices}, n);

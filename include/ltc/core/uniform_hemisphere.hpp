@@ -38,8 +38,11 @@ struct uniform_hemisphere {
         return detail::clipped_solid_angle<T>(v, n) / (T(2) * pi<T>());
     }
 
-    LTC_HOST_DEVICE static T integrate(const vec3* v, std::size_t n) {
-        return std::abs(signed_integral(v, n));
+    /// Integral of D_o over the spherical polygon subtended by v[0..n), one- or two-sided as
+    /// apply_sidedness makes the signed integral; two-sided (|signed|) by default, as
+    /// transformed::integrate (which states why).
+    LTC_HOST_DEVICE LTC_INLINE static T integrate(const vec3* v, std::size_t n, sidedness s = sidedness::two_sided) {
+        return apply_sidedness(signed_integral(v, n), s);
     }
 };
 
