@@ -29,6 +29,7 @@
 #include <ltc/core/squared_clamped_cosine.hpp>
 #include <ltc/core/transformed.hpp>
 #include <ltc/core/invalid_transform.hpp>
+#include <ltc/core/invalid_polygon.hpp>
 #include <ltc/core/line_integral.hpp>
 #include <ltc/core/ellipse_integral.hpp>
 #include <ltc/core/spherical_triangle_sampling.hpp>
