@@ -61,8 +61,8 @@ LTC_NAMESPACE_BEGIN
 /// foot point with a filter of the wrong width and shape, the detail is missed (the result is the
 /// background) or smeared over the wrong place. The paper presents I_L as an approximation for
 /// this reason; the cell methods (textured_method) integrate the texel-constant texture instead.
-/// Their errors against Monte Carlo: docs/textured.md and docs/results/; the figures measured when
-/// this was written: docs/design_notes.md.
+/// The methods' errors against Monte Carlo: examples/textured_error_report, and docs/design_notes.md
+/// ("Textured polygonal lights").
 template <typename T>
 inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
                                               const light_texture<T>& tex, sidedness side = sidedness::two_sided) {
@@ -80,8 +80,8 @@ inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T
 /// (ltc/shading/quick_cells.hpp): 16 exact cells and up to 8 of their children in two kernel
 /// calls, each leaf its mean, or the paper's fetch at the foot point clamped into it in the (at
 /// most) two leaves of largest I_D that are wider than the lobe (docs/textured.md compares the
-/// three, docs/results/ against Monte Carlo). For example, the exact integral over 64 adaptive
-/// cells:
+/// three; docs/design_notes.md, "Textured polygonal lights", against Monte Carlo and in cost).
+/// For example, the exact integral over 64 adaptive cells:
 ///
 ///   light = ltc::textured_quad_light<float>::one_sided(quad_world, emission_normal, tex,
 ///                                                      ltc::textured_policy{ltc::textured_method::exact_cells, {64}});
