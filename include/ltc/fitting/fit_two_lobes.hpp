@@ -215,10 +215,9 @@ namespace detail {
 /// F (I_2k - I_1k) / w_k, b_k = (G_k - F I_1k) / w_k, clamped to [0, 1] (the constrained
 /// optimum). (1 - V.H)^5 grows with the angle between V and L, so the Fresnel part weighs the
 /// lobe's directions farthest from V, towards the horizon beyond the mirror direction, more than
-/// f does, and the magnitude's split s need not suit it (before this fit both tables used s_F =
-/// s). The clamp binds at most nodes of the shipped tables (859 of 1024 with the cosine, 671 of
-/// the two-LTC table's 832 nodes that keep both lobes): mostly the whole Fresnel term on one
-/// lobe, which can change between neighbouring nodes. Where the lobes coincide (a dropped lobe:
+/// f does, and the magnitude's split s need not suit it. The clamp binds at most nodes of the
+/// shipped tables (docs/design_notes.md): mostly the whole Fresnel term on one lobe, which can
+/// change between neighbouring nodes. Where the lobes coincide (a dropped lobe:
 /// s = 0, or s = 1 with two LTCs) s_F = s.
 /// `t`: the Fresnel part's targets over the node's family (make_integral_targets_with_fresnel).
 inline double fresnel_share_of(const integral_targets& t, const two_lobe_result& r) {
