@@ -5,7 +5,8 @@
 #     in docs/results/, written by tools/results.sh;
 #  3. every docs/results/*.md is the one tools/results.sh wrote (docs/results/MANIFEST holds
 #     their SHA-256), and the README's results:summary block is docs/results/summary.md's;
-#  4. every header's preamble (the lines before `#pragma once`) is at most 15 lines, and no comment
+#  4. every header's preamble (the lines before `#pragma once`; in a .inc, which has none, its
+#     leading comment) is at most 15 lines, and no comment
 #     in a header quotes a measured figure (a percentage, a ratio like 1.24x, a rate in M/s, the
 #     word "measured"): measurements live in docs/design_notes.md and docs/results/.
 #   cmake -DLTC_SOURCE_DIR=<repository root> -P cmake/check_docs.cmake
@@ -125,11 +126,18 @@ foreach(f IN LISTS _headers)
   string(REPLACE "\n" ";" _lines "${_text}")
   set(_n 0)
   set(_pragma 0)
+  set(_leading 0)  # the leading comment's lines (for a .inc)
+  set(_in_lead TRUE)
   set(_in_block FALSE)
   foreach(line IN LISTS _lines)
     math(EXPR _n "${_n} + 1")
     if(_pragma EQUAL 0 AND line MATCHES "^[ \t]*#[ \t]*pragma[ \t]+once")
       set(_pragma ${_n})
+    endif()
+    if(_in_lead AND line MATCHES "^[ \t]*(//.*)?$")
+      set(_leading ${_n})
+    else()
+      set(_in_lead FALSE)
     endif()
     # The comment part of the line: after //, or inside /* */.
     set(_comment "")
@@ -159,13 +167,16 @@ foreach(f IN LISTS _headers)
       _fail("${f}:${_n}: a measured figure in a header comment (it belongs in docs/design_notes.md or docs/results/): ${line}")
     endif()
   endforeach()
-  if(_pragma EQUAL 0)
-    _fail("${f}: no #pragma once")
-  else()
+  if(_pragma GREATER 0)
     math(EXPR _pre "${_pragma} - 1")
-    if(_pre GREATER _preamble_max)
-      _fail("${f}: a preamble of ${_pre} lines before #pragma once (at most ${_preamble_max}: move the rest next to the declarations it documents, measurements and history to docs/design_notes.md)")
-    endif()
+  elseif(f MATCHES "\\.inc$")
+    set(_pre ${_leading})
+  else()
+    _fail("${f}: no #pragma once")
+    set(_pre 0)
+  endif()
+  if(_pre GREATER _preamble_max)
+    _fail("${f}: a preamble of ${_pre} lines (at most ${_preamble_max}: move the rest next to the declarations it documents, measurements and history to docs/design_notes.md)")
   endif()
 endforeach()
 
