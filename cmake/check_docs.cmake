@@ -4,8 +4,21 @@
 #  2. the guide's pages (docs/*.md but the design notes) quote no measured figure: figures live
 #     in docs/results/, written by tools/results.sh;
 #  3. every docs/results/*.md is the one tools/results.sh wrote (docs/results/MANIFEST holds
-#     their SHA-256), and the README's results:summary block is docs/results/summary.md's.
+#     their SHA-256), and the README's results:summary block is docs/results/summary.md's;
+#  4. every header's preamble (the lines before `#pragma once`; in a .inc, which has none, its
+#     leading comment) is at most 15 lines, and no comment
+#     in a header quotes a measured figure (a percentage, a ratio like 1.24x, a rate in M/s, the
+#     word "measured"): measurements live in docs/design_notes.md and docs/results/.
 #   cmake -DLTC_SOURCE_DIR=<repository root> -P cmake/check_docs.cmake
+# Headers that check 4 skips (regular expressions on paths from the repository root): the tables
+# the fitter writes, and those whose preambles are not shortened yet.
+set(_header_exempt
+  "^include/ltc/tables/ggx"
+  "^include/ltc/shading/batch"
+  "^include/ltc/shading/detail/"
+  "^include/ltc/core/")
+set(_preamble_max 15)
+
 if(NOT LTC_SOURCE_DIR)
   message(FATAL_ERROR "check_docs: set -DLTC_SOURCE_DIR=<repository root>")
 endif()
@@ -97,6 +110,75 @@ else()
     endif()
   endif()
 endif()
+
+# 4. Header preambles and measured figures in header comments.
+file(GLOB_RECURSE _headers RELATIVE "${_root}" "${_root}/include/*.hpp" "${_root}/include/*.inc")
+foreach(re IN LISTS _header_exempt)
+  list(FILTER _headers EXCLUDE REGEX "${re}")
+endforeach()
+foreach(f IN LISTS _headers)
+  file(READ "${_root}/${f}" _text)
+  # Split into lines by hand: ';', '[', ']' and '\' would confuse a CMake list.
+  string(REPLACE "\\" "<bs>" _text "${_text}")
+  string(REPLACE ";" "<sc>" _text "${_text}")
+  string(REPLACE "[" "<lb>" _text "${_text}")
+  string(REPLACE "]" "<rb>" _text "${_text}")
+  string(REPLACE "\n" ";" _lines "${_text}")
+  set(_n 0)
+  set(_pragma 0)
+  set(_leading 0)  # the leading comment's lines (for a .inc)
+  set(_in_lead TRUE)
+  set(_in_block FALSE)
+  foreach(line IN LISTS _lines)
+    math(EXPR _n "${_n} + 1")
+    if(_pragma EQUAL 0 AND line MATCHES "^[ \t]*#[ \t]*pragma[ \t]+once")
+      set(_pragma ${_n})
+    endif()
+    if(_in_lead AND line MATCHES "^[ \t]*(//.*)?$")
+      set(_leading ${_n})
+    else()
+      set(_in_lead FALSE)
+    endif()
+    # The comment part of the line: after //, or inside /* */.
+    set(_comment "")
+    if(_in_block)
+      set(_comment "${line}")
+      if(line MATCHES "\\*/")
+        set(_in_block FALSE)
+      endif()
+    else()
+      string(FIND "${line}" "//" _c)
+      string(FIND "${line}" "/*" _b)
+      if(_c GREATER_EQUAL 0 AND (_b LESS 0 OR _c LESS _b))
+        string(SUBSTRING "${line}" ${_c} -1 _comment)
+      elseif(_b GREATER_EQUAL 0)
+        string(SUBSTRING "${line}" ${_b} -1 _comment)
+        if(NOT _comment MATCHES "\\*/")
+          set(_in_block TRUE)
+        endif()
+      endif()
+    endif()
+    string(TOLOWER "${_comment}" low)
+    if(low MATCHES "[0-9]%|[0-9]x([^0-9a-z_]|$)|(^|[^a-z])measured([^a-z]|$)" OR _comment MATCHES "M/s")
+      string(REPLACE "<sc>" ";" line "${line}")
+      string(REPLACE "<lb>" "[" line "${line}")
+      string(REPLACE "<rb>" "]" line "${line}")
+      string(REPLACE "<bs>" "\\" line "${line}")
+      _fail("${f}:${_n}: a measured figure in a header comment (it belongs in docs/design_notes.md or docs/results/): ${line}")
+    endif()
+  endforeach()
+  if(_pragma GREATER 0)
+    math(EXPR _pre "${_pragma} - 1")
+  elseif(f MATCHES "\\.inc$")
+    set(_pre ${_leading})
+  else()
+    _fail("${f}: no #pragma once")
+    set(_pre 0)
+  endif()
+  if(_pre GREATER _preamble_max)
+    _fail("${f}: a preamble of ${_pre} lines (at most ${_preamble_max}: move the rest next to the declarations it documents, measurements and history to docs/design_notes.md)")
+  endif()
+endforeach()
 
 if(_failures GREATER 0)
   message(FATAL_ERROR "check_docs: ${_failures} problem(s)")

@@ -37,7 +37,7 @@
 #endif
 
 // LTC_INLINE marks the small functions of the integration hot path: GCC otherwise declines to
-// inline some of them (measured: a call per vertex and per edge costs more than the math).
+// inline some of them, and a call per vertex and per edge costs more than the math.
 // LTC_NOINLINE keeps rare slow paths (rescaling of huge or tiny vectors) out of the hot code.
 #if defined(__GNUC__) || defined(__clang__)
 #define LTC_INLINE inline __attribute__((always_inline))

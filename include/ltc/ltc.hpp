@@ -1,9 +1,17 @@
-// ltc/ltc.hpp -- umbrella header of the runtime: everything a renderer shades with.
+// ltc/ltc.hpp -- umbrella header of the runtime: everything a renderer shades with (core, brdf,
+// tables, shading); the references and the fitter have their own (ltc/reference.hpp,
+// ltc/fitting.hpp).
+//
+//   #include <ltc/ltc.hpp>
 //
 // Linearly Transformed Spherical Distributions and Linearly Transformed Cosines
 // (Heitz, Dupuy, Hill, Neubelt, "Real-Time Polygonal-Light Shading with Linearly Transformed
-// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. The folders are the layers, lowest
-// first (a header includes only its own layer and those below: cmake/check_layers.cmake):
+// Cosines", SIGGRAPH 2016). Header-only; depends on GLM only. Single headers parse less: each
+// generated table is parsed only by its own fetch. The layers: below.
+#pragma once
+
+// The folders are the layers, lowest first (a header includes only its own layer and those
+// below: cmake/check_layers.cmake):
 //
 //   ltc/config.hpp, ltc/detail/   version, ABI namespace, scalar helpers;
 //   ltc/core/       the paper's mathematics: the original distributions, transformed<>, the
@@ -15,10 +23,6 @@
 //                   sphere, line and tube lights, the tables' fetches, structure-of-arrays batches;
 //   ltc/reference/  Monte Carlo ground truth (umbrella: ltc/reference.hpp);
 //   ltc/fitting/    the offline fitter that makes the tables (umbrella: ltc/fitting.hpp).
-//
-// This umbrella is the runtime (core, brdf, tables, shading); the references and the fitter have
-// their own. Single headers parse less: each generated table is parsed only by its own fetch.
-#pragma once
 
 #include <ltc/config.hpp>
 

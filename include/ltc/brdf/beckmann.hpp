@@ -10,23 +10,9 @@
 //               tan^2 theta_h = -alpha^2 log(1 - u.x), phi_h = 2 pi u.y (Walter et al. 2007)
 //   pdf       = D(h) cos theta_h / (4 |V.h|)
 //
-// Numerics (w a unit vector, z = w.z, s = sqrt(w.x^2 + w.y^2), accurate at the pole):
-//   - D = exp(-s^2 / (alpha^2 z^2)) / (pi alpha^2 z^4), 0 as soon as the exponential
-//     underflows (so that 1 / z^4 is then never formed);
-//   - Lambda with a = z / (alpha s) and erf(a) - 1 = -erfc(a) (no cancellation in 1 - erf);
-//     s = 0 (normal incidence, a = inf) gives Lambda = 0; the result is clamped to [0, max];
-//   - sampling uses log1p(-u.x) (accurate for small u.x) and u.x < 1.
-//
-// Sampling D(h) cos theta_h (not the visible normals) draws normals with V.h < 0 too: their
-// reflection L = 2 (V.h) h - V lies below the horizon (L.z = 2 (V.h) h.z - V.z < 0), and the half
-// vector of V and L is then -h. pdf() therefore uses h = +-(V + L) / |V + L|, whichever has
-// h.z > 0: the map h -> L is one-to-one from the upper hemisphere, and pdf integrates to 1 over
-// the whole sphere. It has an integrable 1 / |V + L| singularity at L = -V (V.h -> 0), where the
-// result is clamped to the largest finite T.
-//
 // Degenerate input (never NaN or Inf for finite arguments): alpha clamped to
 // [alpha_min, alpha_max] as for ltc::brdf::ggx (NaN -> alpha_min; alpha -> 0 is a Dirac);
-// V.z <= 0 or L.z <= 0: eval = 0; V.z <= 0: pdf = 0; L = -V: 0.
+// V.z <= 0 or L.z <= 0: eval = 0; V.z <= 0: pdf = 0; L = -V: 0 (numerics: beckmann).
 #pragma once
 
 #include <ltc/brdf/model.hpp>
@@ -43,6 +29,21 @@
 LTC_NAMESPACE_BEGIN
 namespace brdf {
 
+/// Beckmann in the interface of ltc/brdf/model.hpp.
+///
+/// Numerics (w a unit vector, z = w.z, s = sqrt(w.x^2 + w.y^2), accurate at the pole):
+///   - D = exp(-s^2 / (alpha^2 z^2)) / (pi alpha^2 z^4), 0 as soon as the exponential
+///     underflows (so that 1 / z^4 is then never formed);
+///   - Lambda with a = z / (alpha s) and erf(a) - 1 = -erfc(a) (no cancellation in 1 - erf);
+///     s = 0 (normal incidence, a = inf) gives Lambda = 0; the result is clamped to [0, max];
+///   - sampling uses log1p(-u.x) (accurate for small u.x) and u.x < 1.
+///
+/// Sampling D(h) cos theta_h (not the visible normals) draws normals with V.h < 0 too: their
+/// reflection L = 2 (V.h) h - V lies below the horizon (L.z = 2 (V.h) h.z - V.z < 0), and the half
+/// vector of V and L is then -h. pdf() therefore uses h = +-(V + L) / |V + L|, whichever has
+/// h.z > 0: the map h -> L is one-to-one from the upper hemisphere, and pdf integrates to 1 over
+/// the whole sphere. It has an integrable 1 / |V + L| singularity at L = -V (V.h -> 0), where the
+/// result is clamped to the largest finite T.
 template <typename T>
 struct beckmann {
     using scalar = T;
@@ -106,7 +107,7 @@ struct beckmann {
     }
 
     /// Density of sample() per steradian of L: D(h) cos theta_h / (4 |V.h|), h the half vector
-    /// of V and L turned into the upper hemisphere (file comment), over the whole sphere of L.
+    /// of V and L turned into the upper hemisphere (the struct's comment), over the whole sphere of L.
     /// V and L unit.
     LTC_HOST_DEVICE static T pdf(const vec3& V, const vec3& L, T alpha) {
         constexpr T big = largest();

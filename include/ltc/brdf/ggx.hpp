@@ -10,25 +10,9 @@
 //               of Visible Normals", JCGT 7(4))
 //   pdf       = D_V(h) / (4 |V.h|),  D_V(h) = G1(V) max(0, V.h) D(h) / V.z   (Heitz 2018 eq. 1)
 //
-// Every formula is evaluated in a form without tan, 1 - z^2 or a division that can vanish
-// (w a unit vector, z = w.z, s^2 = w.x^2 + w.y^2, which is accurate even at the pole):
-//   D       = alpha^2 / (pi (s_h^2 + alpha^2 z_h^2)^2)
-//   t(w)    = sqrt(z^2 + alpha^2 s^2)          (= z sqrt(1 + alpha^2 tan^2 theta))
-//   Lambda  = alpha^2 s^2 / (2 z (z + t))      (no cancellation in -1 + sqrt(1 + x) at x -> 0)
-//   G1      = 2 z / (z + t)
-//   G2      = 2 z_V z_L / (z_L t_V + z_V t_L)
-//   eval    = D z_L / (2 (z_L t_V + z_V t_L))
-//   pdf     = D / (2 (z_V + t_V))              (V.h = |V + L| / 2 >= 0 for h the half vector)
-//
-// Degenerate input (never NaN or Inf for finite arguments):
-//   - alpha is clamped to [alpha_min, alpha_max] (NaN -> alpha_min). alpha -> 0 is a mirror
-//     (a Dirac, not a density). The library uses alpha = roughness^2 with roughness in [0, 1],
-//     so alpha_min = 1e-4 is roughness 0.01, below any roughness a fit table resolves; there
-//     the peak D(n) = 1 / (pi alpha^2) ~ 3.2e7 and alpha^4 = 1e-16 are still comfortably
-//     inside float's range. alpha_max = 1e3 keeps alpha^4 = 1e12 finite in float.
-//   - V.z <= 0 or L.z <= 0: eval = 0; V.z <= 0: pdf = 0; L = -V (no half vector): 0.
-//   - ndf(h) = 0 for h.z <= 0; g1(w) = 0 for w.z <= 0; lambda(w) is the largest finite T for
-//     w.z <= 0 (its limit at the horizon is +infinity).
+// Degenerate input: never NaN or Inf for finite arguments (the forms evaluated: ggx); alpha is
+// clamped to [alpha_min, alpha_max] = [1e-4, 1e3] (NaN -> alpha_min, roughness 0.01: below any a
+// table resolves); V.z <= 0 or L.z <= 0: eval = 0; V.z <= 0: pdf = 0; L = -V: 0 (clamp_alpha).
 #pragma once
 
 #include <ltc/brdf/model.hpp>
@@ -45,6 +29,16 @@
 LTC_NAMESPACE_BEGIN
 namespace brdf {
 
+/// GGX in the interface of ltc/brdf/model.hpp. Every formula is evaluated in a form without tan,
+/// 1 - z^2 or a division that can vanish (w a unit vector, z = w.z, s^2 = w.x^2 + w.y^2, which is
+/// accurate even at the pole):
+///   D       = alpha^2 / (pi (s_h^2 + alpha^2 z_h^2)^2)
+///   t(w)    = sqrt(z^2 + alpha^2 s^2)          (= z sqrt(1 + alpha^2 tan^2 theta))
+///   Lambda  = alpha^2 s^2 / (2 z (z + t))      (no cancellation in -1 + sqrt(1 + x) at x -> 0)
+///   G1      = 2 z / (z + t)
+///   G2      = 2 z_V z_L / (z_L t_V + z_V t_L)
+///   eval    = D z_L / (2 (z_L t_V + z_V t_L))
+///   pdf     = D / (2 (z_V + t_V))              (V.h = |V + L| / 2 >= 0 for h the half vector)
 template <typename T>
 struct ggx {
     using scalar = T;
@@ -55,7 +49,16 @@ struct ggx {
     static constexpr T alpha_min = T(1e-4);  // see the file comment
     static constexpr T alpha_max = T(1e3);
 
-    /// alpha clamped to [alpha_min, alpha_max]; NaN gives alpha_min.
+    /// alpha clamped to [alpha_min, alpha_max]; NaN gives alpha_min. Degenerate input (never NaN
+    /// or Inf for finite arguments):
+    ///   - alpha -> 0 is a mirror (a Dirac, not a density). The library uses alpha = roughness^2
+    ///     with roughness in [0, 1], so alpha_min = 1e-4 is roughness 0.01, below any roughness a
+    ///     fit table resolves; there the peak D(n) = 1 / (pi alpha^2) ~ 3.2e7 and alpha^4 = 1e-16
+    ///     are still comfortably inside float's range. alpha_max = 1e3 keeps alpha^4 = 1e12
+    ///     finite in float.
+    ///   - V.z <= 0 or L.z <= 0: eval = 0; V.z <= 0: pdf = 0; L = -V (no half vector): 0.
+    ///   - ndf(h) = 0 for h.z <= 0; g1(w) = 0 for w.z <= 0; lambda(w) is the largest finite T for
+    ///     w.z <= 0 (its limit at the horizon is +infinity).
     LTC_HOST_DEVICE static T clamp_alpha(T alpha) {
         return alpha > alpha_min ? (alpha < alpha_max ? alpha : alpha_max) : alpha_min;
     }
@@ -68,7 +71,7 @@ struct ggx {
         return a2 / (pi<T>() * d * d);
     }
 
-    /// Smith Lambda(w) for a unit direction w (w.z > 0), without tan (file comment).
+    /// Smith Lambda(w) for a unit direction w (w.z > 0), without tan (the struct's comment).
     LTC_HOST_DEVICE static T lambda(const vec3& w, T alpha) {
         constexpr T big = largest();
         if (!(w.z > T(0))) return big;

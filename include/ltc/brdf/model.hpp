@@ -11,9 +11,8 @@
 //   static vec3 sample(const vec3& V, const vec2& u, T alpha);  // u in [0, 1)^2 -> direction L
 //   static constexpr const char* name;                          // "ggx", "beckmann"
 //
-// eval is 0 for L.z <= 0. No Fresnel term is included (the fit factors it out, Hill 2016).
-// sample() may return directions below the horizon (where eval is 0); pdf must be the exact
-// density of sample() so that eval / pdf is an unbiased estimator.
+// eval is 0 for L.z <= 0; no Fresnel term (the fit factors it out, Hill 2016). sample() may return
+// directions below the horizon (eval 0 there); pdf is sample()'s exact density: eval / pdf unbiased.
 #pragma once
 
 #include <ltc/config.hpp>

@@ -1,28 +1,14 @@
 // ltc/fitting/error_metric.hpp -- the fit's objective (paper section 4): the L3 distance between
 // f = rho cos and magnitude * D, estimated by MIS over a frozen sample set (sample_set,
-// make_sample_set), and the same estimator as an independent measure of a fitted node
+// make_sample_set), and the same estimator as an independent check of a fitted node
 // (node_error, measure_error).
 //
-// Error metric: the paper's L3 distance
+//   E(M) = integral over the sphere of |f(L) - magnitude * D_M(L)|^3 dL
+//        ~= sum_i |f - m D|^3 / (n^2 p_brdf + n^2 p_ltc)   (n x n midpoints through each sampler)
 //
-//   E(M) = integral over the sphere of |f(L) - magnitude * D_M(L)|^3 dL,
-//
-// estimated, like the paper's code, by multiple importance sampling with the balance heuristic
-// over two n x n midpoint grids (n = options::error_samples): one through Brdf::sample, one
-// through the LTC's own sampler (Algorithm 1): E ~= sum_i |f - m D|^3 / (n^2 p_brdf + n^2 p_ltc).
-// One change, for speed and for a smooth objective: the LTC samples are drawn from a *frozen*
-// proposal LTC (the starting point of the current round) instead of the current candidate, so
-// that f, p_brdf and p_ltc are computed once per round and each evaluation of E only evaluates
-// D_M (a 3x3 product and a division per sample, no BRDF call: ~10x faster per node than the
-// paper's code). Like the paper's, this is an importance-sampling estimate of E for any
-// candidate (MIS with a fixed proposal instead of a moving one); it is most accurate near the
-// proposal, so the fit runs options::rounds rounds, each re-centring the proposal on the
-// previous round's result, and the last round's proposal is close to the final LTC as in the
-// paper (ltc/fitting/fit_node.hpp). The frozen samples also make E a fixed smooth function of the
-// parameters during a minimization, so that Nelder-Mead converges instead of chasing the noise
-// of moving samples. Why L3 and not, say, L1 or L2: the paper found that it gives the best
-// visual results (it weighs the peak of the lobe, where highlights come from, more than the
-// tails); we keep it and report the result in both L1 and L3 (node_result, measure_error).
+// Conventions: double, the local frame of ltc/fitting/fit.hpp; the LTC's samples come from a
+// frozen proposal, re-centred each round (make_sample_set). L3, as in the paper, weighs the peak
+// of the lobe, where highlights come from, more than the tails; node_error reports L1 too.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -114,6 +100,27 @@ class sample_set {
 /// Fills `out` with the MIS estimator of the paper: n x n midpoint samples through the BRDF's
 /// sampler and n x n through the LTC of the matrix M, f evaluated at each, weights
 /// 1 / (n^2 p_brdf + n^2 p_ltc).
+///
+/// Error metric: the paper's L3 distance
+///
+///   E(M) = integral over the sphere of |f(L) - magnitude * D_M(L)|^3 dL,
+///
+/// estimated, like the paper's code, by multiple importance sampling with the balance heuristic
+/// over two n x n midpoint grids (n = options::error_samples): one through Brdf::sample, one
+/// through the LTC's own sampler (Algorithm 1): E ~= sum_i |f - m D|^3 / (n^2 p_brdf + n^2 p_ltc).
+/// One change, for speed and for a smooth objective: the LTC samples are drawn from a *frozen*
+/// proposal LTC (the starting point of the current round) instead of the current candidate, so
+/// that f, p_brdf and p_ltc are computed once per round and each evaluation of E only evaluates
+/// D_M (a 3x3 product and a division per sample, no BRDF call). Like the paper's, this is an
+/// importance-sampling estimate of E for any candidate (MIS with a fixed proposal instead of a
+/// moving one); it is most accurate near the proposal, so the fit runs options::rounds rounds,
+/// each re-centring the proposal on the previous round's result, and the last round's proposal
+/// is close to the final LTC as in the paper (ltc/fitting/fit_node.hpp). The frozen samples also
+/// make E a fixed smooth function of the parameters during a minimization, so that Nelder-Mead
+/// converges instead of chasing the noise of moving samples. Why L3 and not, say, L1 or L2: the
+/// paper found that it gives the best visual results (it weighs the peak of the lobe, where
+/// highlights come from, more than the tails); we keep it and report the result in both L1 and
+/// L3 (node_result, measure_error).
 template <template <typename> class Brdf>
 void make_sample_set(const glm::dvec3& V, double alpha, const glm::dmat3& M, int n, sample_set& out) {
     using B = Brdf<double>;

@@ -9,22 +9,15 @@
 //   ltc::ltc_table view(data.data(), tab.size, tab.size);    // then view.fetch(cos, roughness)
 //   std::string text = ltc::fit::table_header_text("ggx", "GGX", tab, opt);  // as ltc/tables/ggx.hpp
 //
-// What is fitted. For a view direction V = (sin theta_v, 0, cos theta_v) (local frame N = +z)
-// and a roughness alpha, the spherical function f(L) = rho(V, L) cos(theta_L) (Brdf::eval) is
-// approximated by magnitude * D(L), D the linearly transformed cosine of a matrix
-//
-//   M = R * [m11 0 m13; 0 m22 0; m31 0 1]     (rows; GLM stores M[column][row])
-//
-// where R is the rotation about y that takes +z to the BRDF's average direction (the direction
-// of the integral of f(L) L, y component zeroed). That is the paper's 4-parameter matrix
-// [a 0 b; 0 c 0; d 0 1] written in the rotated frame: the general matrix of an isotropic BRDF
-// up to scale. (The paper's code release keeps m31 = 0 and fits 3 parameters; options::
-// parameters = 3 does the same.) At normal incidence the lobe is rotationally symmetric and
-// M = diag(m, m, 1) has one parameter.
-//
+// f(L) = rho(V, L) cos(theta_L) ~= magnitude * D(L), D the LTC of M = R [m11 0 m13; 0 m22 0; m31 0 1]
+// (ltc_parameters), V = (sin theta_v, 0, cos theta_v) in the local frame N = +z. All in double and
+// deterministic: the same binary gives the same table bit for bit, whatever the thread count. The
+// pieces, each of which can be included on its own: the includes below.
+#pragma once
+
 // The pieces, each of which can be included on its own, and each documents its part of the method:
 //   ltc/fitting/options.hpp         options (the fit's settings); the coordinates of a table's nodes
-//   ltc/fitting/ltc_parameters.hpp  the fitted matrix M and the fit's own arithmetic on it
+//   ltc/fitting/ltc_parameters.hpp  the fitted matrix M (what is fitted) and the fit's own arithmetic on it
 //   ltc/fitting/moments.hpp         per-node magnitude, Fresnel term and average direction
 //   ltc/fitting/error_metric.hpp    the L3 error, by MIS over frozen samples; measure_error
 //   ltc/fitting/nelder_mead.hpp     the minimizer
@@ -32,15 +25,12 @@
 //   ltc/fitting/integral_objective.hpp, fit_integrals.hpp  the opt-in objective of options::goal:
 //                                   relative error of integrals over a fixed family of polygons
 //   ltc/fitting/fit_table.hpp       fitting a whole table on std::threads (fit_table)
+//   ltc/fitting/fit_two_lobes.hpp   nodes and tables of two lobes
 //   ltc/fitting/table_writer.hpp    a fitted table as a C++ header (table_header_text)
 //
-// Everything is computed in double precision and is deterministic: the same binary gives the
-// same table bit for bit, whatever the thread count. The fit's arithmetic lives in these headers
-// (its own 3x3 inverse, cosine sampler and normalization: ltc/fitting/ltc_parameters.hpp) and in
-// the BRDF model, so that changes elsewhere in the library do not move the bits of a generated
-// table.
-#pragma once
-
+// The fit's arithmetic lives in these headers (its own 3x3 inverse, cosine sampler and
+// normalization: ltc/fitting/ltc_parameters.hpp) and in the BRDF model, so that changes elsewhere
+// in the library do not move the bits of a generated table.
 #include <ltc/brdf/model.hpp>
 #include <ltc/fitting/options.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>

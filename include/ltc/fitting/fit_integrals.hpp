@@ -8,7 +8,7 @@
 // options::fit_magnitude, log k for a scale k of the magnitude (the stored magnitude and Fresnel
 // term are both multiplied by k: the fifth degree of freedom of an isotropic lobe, since M
 // itself is only defined up to scale). The GGX integrals are computed once per node; the
-// options::rounds rounds restart Nelder-Mead with a 4x smaller simplex (for combined, each round
+// options::rounds rounds restart Nelder-Mead with a simplex 4 times smaller (for combined, each round
 // also re-centres the L3 estimator's proposal, as the L3 fit does).
 #pragma once
 

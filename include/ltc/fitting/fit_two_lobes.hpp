@@ -1,52 +1,18 @@
-// ltc/fitting/fit_two_lobes.hpp -- fitting a node with a *sum of two* LTCs (where one
-// linearly transformed cosine cannot follow GGX, at grazing views and low roughness):
+// ltc/fitting/fit_two_lobes.hpp -- fitting a node with a *sum of two* LTCs, where one linearly
+// transformed cosine cannot follow GGX (at grazing views and low roughness):
 //
 //   f = rho cos ~= magnitude * ((1 - s) D_1 + s D_2),   D_i the LTC of M_i, s in (0, 1),
 //
-// each D_i integrated over a polygon exactly (eq. 3), so the shading integral stays closed form at
-// about 1.6x the cost of one lobe (one more LTC integral, no second form factor). M_1 and M_2
-// have the structure of ltc/fitting/ltc_parameters.hpp (4 parameters each about the BRDF's
-// average direction); s is the second lobe's share of the magnitude, parameterized by its logit.
+// each D_i integrated over a polygon exactly (eq. 3), so the shading integral stays closed form
+// (one more LTC integral, no second form factor). M_1 and M_2 have the structure of
+// ltc/fitting/ltc_parameters.hpp; s is the second lobe's share. The model ltc_and_cosine fixes
+// lobe 1 at the clamped cosine about the normal (M_1 = I), whose integral is the form factor.
 //
-// Objective (fit_two_lobes): the integral loss of ltc/fitting/integral_objective.hpp applied to
-// the mixture, plus the squared relative L3 distance of the mixture to f (the combined objective
-// of fit_integrals.hpp, written for two lobes): the L3 term keeps the peak, the integrals the
-// tails. The L3 distance is estimated by MIS (balance heuristic) over three n x n midpoint sets:
-// the BRDF's sampler and each lobe's (Algorithm 1), frozen for a round and re-centred on the
-// round's result, as in ltc/fitting/error_metric.hpp. Minimizer: Nelder-Mead on the 9 numbers
-// (3 at normal incidence, where both lobes are isotropic), from lobe 1 = the one-lobe fit and
-// lobe 2 = lobe 1 twice as wide with share 0.2.
+//   ltc::fit::two_lobe_result r = ltc::fit::fit_two_lobes<ltc::brdf::ggx>(cos_theta, alpha, start, opt);
+//   ltc::fit::two_lobe_table t = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt);
 //
-// The Fresnel term (Hill 2016: the integral of rho cos (1 - V.H)^5, which a specular colour F0
-// weighs by 1 - F0) is split between the lobes by a fit of its own once the lobes are fitted
-// (detail::fresnel_share_of: a least-squares share in closed form), not by the magnitude's share s:
-// its integrand weighs other parts of the lobe. With the magnitude's share a dielectric's (F0 =
-// 0.04) specular term was 21.7% (LTC and cosine) and 23.1% (two LTCs) off on the lights of
-// examples/ggx_error_report's grid (--f0 0.04), with its own split 14.9% and 13.5% (one lobe: 24.7%).
-//
-// Robustness: a lobe left with almost no share is dropped (fit_two_lobes), and the table's nodes
-// that land on a plateau of the objective are refitted from their one-lobe fit as a single lobe
-// (detail::fit_two_lobes_guarded): each fixed a failure of the table between the nodes of the
-// report's grid (near-mirror reflections missed by up to 100%, mirror lights at roughness
-// 0.15-0.18 by up to 41%: tests/test_two_lobe.cpp; examples/ggx_error_report --grid off).
-// The model `ltc_and_cosine` keeps lobe 1 fixed at the clamped cosine about the normal (M_1 = I):
-//
-//   f = rho cos ~= magnitude * ((1 - s) D_cos + s D_M),
-//
-// whose integral over a polygon is the form factor, which the shading computes anyway for the
-// diffuse term: one LTC's cost, with a share of GGX's lobe moved to the broad part that a single
-// LTC cannot follow (ltc/shading/cosine_lobe_polygon_light.hpp). The same objective fits D_M and
-// s (5 numbers), its integrals over the spiral family with the floor at the significance
-// threshold (integral_family::spiral(), ltc/fitting/integral_objective.hpp: the tails, where the
-// cosine's share shows, count), each node from its own one-lobe fit with s = 0.9 (marching the
-// two-lobe fit along the rows, as the two-LTC table does, measured 5.98% instead of 5.14% on the
-// report's grid with the rings' family: starts caught in a minimum where the cosine takes all,
-// carried along a row).
-// Caveat (ggx_error_report, section 8): the fit stays fragile where the lobes' parts are not
-// settled (roughness 0.2-0.25 at grazing views), since nodes are marched from their neighbours
-// and a table interpolates lobe by lobe; variants of the objective's evaluation, of the starts, of
-// the lobes' order, of the shear's parameterization, of the dropping threshold or a constraint
-// D_l(N) > 0 measured while writing it were all worse on one grid or the other.
+// Conventions: double, the node layout of ltc/fitting/fit.hpp. Degenerate cases: a lobe left with
+// almost no share is dropped (fit_two_lobes); a node on a plateau is refitted as a single lobe.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -82,7 +48,17 @@ LTC_NAMESPACE_BEGIN
 namespace fit {
 
 /// What the two lobes are: two free LTCs, or lobe 1 fixed at the clamped cosine about the normal
-/// (M_1 = I, its integral the form factor) and lobe 2 a free LTC.
+/// (M_1 = I, its integral the form factor) and lobe 2 a free LTC. With ltc_and_cosine,
+///
+///   f = rho cos ~= magnitude * ((1 - s) D_cos + s D_M),
+///
+/// whose integral over a polygon is the form factor, which the shading computes anyway for the
+/// diffuse term: one LTC's cost, with a share of GGX's lobe moved to the broad part that a single
+/// LTC cannot follow (ltc/shading/cosine_lobe_polygon_light.hpp). The same objective fits D_M and
+/// s (5 numbers), its integrals over the spiral family with the floor at the significance
+/// threshold (integral_family::spiral(), ltc/fitting/integral_objective.hpp: the tails, where the
+/// cosine's share shows, count), each node from its own one-lobe fit with s = 0.9
+/// (start_with_cosine; not marched along the rows as the two-LTC table is: docs/design_notes.md).
 enum class two_lobe_model { two_ltcs, ltc_and_cosine };
 
 struct two_lobe_result {
@@ -179,13 +155,9 @@ nelder_mead_result<9> minimize_padded(const F& objective, const std::array<doubl
 }  // namespace detail
 
 /// The edge terms of the objective's LTC integrals: the double-accurate polynomial_double
-/// (ltc/core/edge_policy.hpp) instead of atan2, which took 26% of the fit's time. Measured with
-/// ltc_fit --lobes 2: the fit takes 0.79x the time, and the table's bits change at one node of
-/// 1024 (a single-lobe node, roughness 0.065 at the grazing limit, by up to 1.3%), the error
-/// report's figures not at all. The float-accurate minimax_rational saves more (21 instead of
-/// 29 us per evaluation at atan2), but perturbing the objective by 4e-8 moves nearly every node
-/// within Nelder-Mead's tolerance, and the table came out worse (examples/ggx_error_report: 2.81%
-/// against 2.59% on the report's grid, 5.45% against 5.12% off it).
+/// (ltc/core/edge_policy.hpp) instead of atan2, which is slower. The float-accurate
+/// minimax_rational would be faster still, but perturbing the objective by 4e-8 moves nearly every
+/// node within Nelder-Mead's tolerance (docs/design_notes.md: the comparison).
 using objective_edge_policy = edge_policy::polynomial_double;
 
 /// Where a two-lobe fit starts: both lobes (their axes are replaced by the node's average
@@ -243,10 +215,9 @@ namespace detail {
 /// F (I_2k - I_1k) / w_k, b_k = (G_k - F I_1k) / w_k, clamped to [0, 1] (the constrained
 /// optimum). (1 - V.H)^5 grows with the angle between V and L, so the Fresnel part weighs the
 /// lobe's directions farthest from V, towards the horizon beyond the mirror direction, more than
-/// f does, and the magnitude's split s need not suit it (before this fit both tables used s_F =
-/// s). The clamp binds at most nodes of the shipped tables (859 of 1024 with the cosine, 671 of
-/// the two-LTC table's 832 nodes that keep both lobes): mostly the whole Fresnel term on one
-/// lobe, which can change between neighbouring nodes. Where the lobes coincide (a dropped lobe:
+/// f does, and the magnitude's split s need not suit it. The clamp binds at most nodes of the
+/// shipped tables (docs/design_notes.md): mostly the whole Fresnel term on one lobe, which can
+/// change between neighbouring nodes. Where the lobes coincide (a dropped lobe:
 /// s = 0, or s = 1 with two LTCs) s_F = s.
 /// `t`: the Fresnel part's targets over the node's family (make_integral_targets_with_fresnel).
 inline double fresnel_share_of(const integral_targets& t, const two_lobe_result& r) {
@@ -269,9 +240,26 @@ inline double fresnel_share_of(const integral_targets& t, const two_lobe_result&
 
 /// Fits the two-lobe node of view cos(theta_v) and roughness alpha from `start`; with
 /// `refit_first` false, lobe 1 stays as in `start` and only lobe 2 and the share are fitted
-/// (5 numbers; measured by examples/ggx_error_report, "cells, lobe 1 L3": 6.17% mean error
-/// against 2.22% with both lobes fitted, so the tables refit both). With start.model
-/// ltc_and_cosine, lobe 1 is the cosine and stays fixed whatever `refit_first` says.
+/// (5 numbers; the tables refit both: docs/design_notes.md). With start.model ltc_and_cosine,
+/// lobe 1 is the cosine and stays fixed whatever `refit_first` says.
+///
+/// Objective: the integral loss of ltc/fitting/integral_objective.hpp applied to the mixture,
+/// plus the squared relative L3 distance of the mixture to f (the combined objective of
+/// fit_integrals.hpp, written for two lobes): the L3 term keeps the peak, the integrals the
+/// tails. The L3 distance is estimated by MIS (balance heuristic) over three n x n midpoint sets:
+/// the BRDF's sampler and each lobe's (Algorithm 1), frozen for a round and re-centred on the
+/// round's result, as in ltc/fitting/error_metric.hpp. Minimizer: Nelder-Mead on the 9 numbers
+/// (3 at normal incidence, where both lobes are isotropic; 4 parameters per lobe about the BRDF's
+/// average direction, and the share s parameterized by its logit), from lobe 1 = the one-lobe fit
+/// and lobe 2 = lobe 1 twice as wide with share 0.2 (start_from_one_lobe).
+///
+/// The Fresnel term (Hill 2016: the integral of rho cos (1 - V.H)^5, which a specular colour F0
+/// weighs by 1 - F0) is split between the lobes by a fit of its own once the lobes are fitted
+/// (detail::fresnel_share_of: a least-squares share in closed form), not by the magnitude's share
+/// s: its integrand weighs other parts of the lobe.
+///
+/// A lobe left with under 1e-3 of the magnitude is dropped: it becomes a copy of the other, with
+/// share 0 (with the cosine as lobe 1, a dead LTC becomes the cosine).
 template <template <typename> class Brdf>
 two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_start& start, const options& opt,
                               bool refit_first = true) {
@@ -382,8 +370,8 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     // with share 0. Nothing constrains such a lobe: it drifts towards a spike of huge density,
     // which the L3 term's frozen samples hit or miss at random. The next node, started from it,
     // then sees a noisy objective, and Nelder-Mead stopped on its first simplex along whole rows
-    // (roughness 0.16 at grazing views: lobe 1 frozen, +56% on a mirror light). A table also
-    // interpolates a spike's matrix into its neighbours (examples/ggx_error_report --grid off).
+    // (docs/design_notes.md). A table also interpolates a spike's matrix into its neighbours
+    // (examples/ggx_error_report --grid off).
     // With the cosine as lobe 1, only the LTC can drift; a dead LTC becomes the cosine (the node
     // all cosine), and the cosine, fixed, stays whatever its share.
     constexpr double dead = 1e-3;
@@ -395,8 +383,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
 }
 
 /// The shipped two-lobe tables' size (ltc/tables/ggx_two_lobe.hpp): 32 x 32, where the two-lobe
-/// fit's cost (about 4x the one-lobe fit's per node) and its error (examples/ggx_error_report,
-/// section 8) meet.
+/// fit's cost and its error (examples/ggx_error_report, section 8) meet (docs/design_notes.md).
 inline constexpr int two_lobe_default_size = 32;
 
 /// A size x size table of two-lobe nodes (nodes[a * size + t], as ltc::fit::table).
@@ -417,10 +404,9 @@ struct two_lobe_table {
     /// magnitude channel (m s), which a lookup divides out again (ltc::ggx_cosine_lobe::fetch):
     /// the bilinear lookup then weights each node's matrix by the LTC's share there. The optimal
     /// split between the cosine and the LTC jumps between neighbouring nodes at rough, near-normal
-    /// views (roughness 0.77-0.87, theta_v below 30 deg: a node of 98% cosine and a flattened LTC
-    /// next to one of 9% cosine and an LTC close to the cosine), and the plain lookup there gave
-    /// the flattened matrix to half the magnitude: -37% on a light at the zenith (roughness 0.84,
-    /// theta_v 1.3 deg; tests/test_cosine_lobe.cpp). Subnormal values are flushed to 0, and a
+    /// views (a node almost all cosine with a flattened LTC next to one with little cosine and an
+    /// LTC close to the cosine), and the plain lookup there gave the flattened matrix to half the
+    /// magnitude (tests/test_cosine_lobe.cpp; docs/design_notes.md). Subnormal values are flushed to 0, and a
     /// lobe whose magnitude channel flushes to 0 stores a zero matrix too (so that every lookup
     /// stays a convex combination of the nodes' matrices), and gives its Fresnel term to the
     /// cosine (a zero matrix reads as the cosine: ltc::ggx_cosine_lobe::unpremultiplied).
@@ -458,20 +444,10 @@ namespace detail {
 
 /// fit_two_lobes from `start`; where that fails, refitted from the node's one-lobe fit `one()` as
 /// a single lobe (both lobes that fit, share 0) and the better of the two kept. Failed: an
-/// implausible value (relative errors of the order of 30% and more); along a row, where the
-/// grazing nodes' values reach 0.6 (theta_v near 90 deg), only if Nelder-Mead also stalled on its
-/// first simplex or found no admissible point (a plateau of the objective). Found so:
-/// - in the normal-incidence chain, whose nodes fit to values about 1e-5: started from the
-///   previous node's lobes, 10x too wide at the smallest roughness (alpha 1e-3 to the clamp
-///   1e-4), the last node sat on a plateau (value 1.34), and the table missed near-mirror
-///   reflections by up to 100% (tests/test_two_lobe.cpp);
-/// - along the rows of roughness 0-0.1 towards grazing: starts whose lobes missed GGX's (values
-///   0.7 and more), carried along the row.
-/// A refit from start_from_one_lobe (a second lobe at share 0.2) instead revived second lobes at
-/// grazing nodes of roughness 0.1, where the main example's gold tiles got 2x worse (11.2%
-/// against 5.4%, examples/render --lobes 2, measured with a constraint D(N) > 0 also in place). A
-/// choice by value between the two starts at every node was measured worse (lobes swapping parts
-/// between neighbours, which the table interpolates lobe by lobe).
+/// implausible value (above 0.1: relative errors of the order of 0.3 and more); along a row, where
+/// the grazing nodes' values reach 0.6 (theta_v near 90 deg), only if Nelder-Mead also stalled on
+/// its first simplex or found no admissible point (a plateau of the objective). The failures this
+/// guards against (tests/test_two_lobe.cpp), and the refits tried instead: docs/design_notes.md.
 template <template <typename> class Brdf, typename OneLobe>
 two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_lobe_start& start, const options& opt,
                                       bool along_row, OneLobe&& one) {
@@ -497,9 +473,17 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
 /// node towards grazing, each node from its neighbour, on options::threads threads (the result
 /// does not depend on it). The chain runs on the calling thread while the others take the rows in
 /// the chain's order, each as soon as its first node is fitted. That order also puts the cheap rows
-/// last (roughness below 0.2: 0.25 s each on one thread, against 0.75 s for the others), so that
-/// the threads finish together. With the ltc_and_cosine model, every node starts from its own
-/// one-lobe fit (start_with_cosine) instead of its neighbour's two-lobe fit.
+/// last (roughness below 0.2), so that the threads finish together. With the ltc_and_cosine model,
+/// every node starts from its own one-lobe fit (start_with_cosine) instead of its neighbour's
+/// two-lobe fit.
+///
+/// Robustness: a lobe left with almost no share is dropped (fit_two_lobes), and the nodes that
+/// land on a plateau of the objective are refitted from their one-lobe fit as a single lobe
+/// (detail::fit_two_lobes_guarded): each fixed a failure of the table between the nodes of the
+/// error report's grid (tests/test_two_lobe.cpp; examples/ggx_error_report --grid off). Caveat:
+/// the fit stays fragile where the lobes' parts are not settled (roughness 0.2-0.25 at grazing
+/// views), since nodes are marched from their neighbours and a table interpolates lobe by lobe
+/// (examples/ggx_error_report, section 8).
 template <template <typename> class Brdf>
 two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two_lobe_model::two_ltcs) {
     if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_two_lobe_table: size must be at least 2");

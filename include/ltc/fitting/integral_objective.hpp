@@ -1,67 +1,17 @@
 // ltc/fitting/integral_objective.hpp -- an opt-in objective for the fit (options::goal =
-// objective::integrals or objective::combined): instead of the paper's L3 distance
-// between the lobes, the relative error of the *integrals* that shading computes, over a fixed
-// family of spherical polygons around and off the lobe (polygon_family, integral_targets,
-// integral_loss). ltc/fitting/fit_integrals.hpp minimizes it.
+// objective::integrals or objective::combined): instead of the paper's L3 distance between the
+// lobes (section 4), the relative error of the *integrals* that shading computes, over a fixed
+// family of spherical polygons around and off the lobe; ltc/fitting/fit_integrals.hpp minimizes it.
 //
-// The family (per node; the same for every candidate M). Regular spherical hexagons, vertices at
-// angular radius r from their centre c, first vertex at phase 0.1 rad, edges on great circles:
-//   lobe       radii r_j = r0 (1.2 / r0)^(j / 4), j = 0..4, r0 = clamp(0.7 alpha, 5e-5, 0.3):
-//              from about half the lobe's width (the GGX lobe's half width at half maximum is
-//              about 1.3 alpha in L) to 1.2 rad, geometrically spaced (a floor of 0.01 rad left
-//              the sharpest lobes undetermined: M drifted to degenerate shapes at roughness 0,
-//              as nothing in the family resolved them). Centred on the lobe's average direction
-//              A (the fit's axis, ltc/fitting/moments.hpp) for every r_j, and for j < 4 also
-//              centred 2 r_j away from A towards the normal, towards the horizon and across the
-//              plane of incidence (+y): 5 + 12 hexagons (centring on the peak of f instead
-//              measured 6.95% against 6.82% on the report);
-//   hemisphere a fixed covering of the upper half-hemisphere y >= 0 (f is symmetric in y):
-//              radius 0.25 rad at elevations 4, 15, 35, 60 deg and azimuths 22.5 + 45 k deg,
-//              k = 0..3, and one at elevation 80 deg, azimuth 22.5 deg: 17 hexagons (the lowest
-//              ring straddles the horizon); and 8 larger ones, radius 0.6 rad, at elevations
-//              12 and 45 deg, azimuths 0, 60, 120, 180 deg (lights of the size that matters
-//              most: with them the report's mean error fell from 7.4% to 6.9%).
-//   spiral     (hemisphere_covering::spiral, the LTC-and-cosine table's: integral_family::spiral())
-//              instead of the rings above: lights of every size anywhere, the faint tails
-//              included, where the cosine's share of a two-part lobe shows: 16 centres of the
-//              golden-angle spiral over the whole upper hemisphere, uniform in solid angle
-//              (z_i = (i + 1/2) / 16, azimuth i 137.508 deg), each mirrored into y >= 0 (f is
-//              symmetric in y, so a hexagon at the mirrored centre stands for one at the
-//              original; mirroring rather than folding the azimuths into [0, 180) keeps the
-//              centres spread: no direction farther than 0.44 rad from its nearest centre,
-//              against 0.66; tests/test_fit_objective.cpp), with hexagons of radius 0.15, 0.45
-//              and 0.9 rad on each: 48 hexagons. Its lowest hexagons straddle the horizon in the
-//              tails, where the quadrature below is least accurate (integral_family).
-// This family is deliberately not the grid of examples/ggx_error_report (rectangles, triangles,
-// pentagons at the mirror direction, the zenith, az 90 el 30 and az 135 el 5, angular radii
-// 0.1 / 0.46 / 1.1 rad whatever the roughness): another shape, lobe polygons placed relative to
-// the average direction and sized relative to the lobe width, a hemisphere covering at other azimuths and
-// elevations (the nearest: el 35 az 112.5 vs the report's el 30 az 90; el 4 az 157.5 vs el 5 az
-// 135; and at theta_v = 80 deg only, the 0.6 rad hexagon at el 12 az 180 lies near the report's
-// mirror placement, el 10 az 180), so that the report measures generalization.
+//   auto targets = ltc::fit::make_integral_targets<ltc::brdf::ggx>(V, alpha, axis, magnitude,
+//                                                                  ltc::fit::integral_family::spiral());
+//   double loss = ltc::fit::integral_loss(targets, m_inv, magnitude);
 //
-// Both integrals are deterministic. The LTC's in closed form, with the horizon clipped in LTC
-// space as horizon_clipping::ltc_space does (transformed<clamped_cosine<double>>::integrate).
-// GGX's once per node, by a two-technique quadrature with the balance heuristic: n_b x n_b
-// midpoint samples through Brdf::sample (shared by all polygons), and, per polygon, 6 m x m
-// midpoint samples uniform in its gnomonic projection (the planar hexagon tangent at c, cut
-// into 6 triangles; density on the sphere 1 / (A (L.c)^3), A the planar area):
-//   G_k = sum_{brdf i, L_i in P_k} f_i / (N_b p_b + N_k p_k) + sum_{poly j} f_j / (N_b p_b + N_k p_k).
-// Polygons with G_k < 1e-3 magnitude are dropped (the error report's significance threshold).
-// The same samples also give the integrals of the Fresnel part, f (1 - V.H)^5 in place of f
-// (make_integral_targets_with_fresnel), for the two-lobe fits' split of the Fresnel term: within
-// 6% of the ground truth on both families' hexagons (tests/test_fit_objective.cpp: 5.15% worst,
-// on the spiral).
-// The loss is the mean squared relative error with a floor f of the magnitude (the albedo) in
-// the denominator, (1/K) sum_k ((m I_k - G_k) / (G_k + f m_0))^2, m_0 the node's magnitude. With
-// the rings f = 1%: without the floor the faint tails (which a single lobe cannot follow
-// everywhere) outvote the few polygons on the peak; squared rather than absolute for a smooth
-// objective (measured on examples/ggx_error_report, section 8, before the 0.6 rad hexagons
-// were added: floor 0 / 0.01 / 0.05 and L1 / L2 gave a mean error of 7.4-8.1%, 0.01 with L2 the
-// best). With the spiral the floor is the significance threshold, 1e-3 m_0: the tails count as
-// relative errors, as the report counts them, and a lobe of two parts can follow them (the
-// LTC-and-cosine table: 4.35% instead of 5.14% on the report's grid, 5.36% instead of 6.78% off
-// it; README, GGX section).
+//   loss = (1/K) sum_k ((m I_k - G_k) / (G_k + floor m_0))^2,   I_k = int_{P_k} D (eq. 3), G_k = int_{P_k} f
+//
+// Conventions: double, the local shading frame (f symmetric in y); P_k regular spherical hexagons
+// (polygon_family), G_k by a deterministic quadrature (make_integral_targets). Degenerate cases:
+// polygons with G_k below significance_threshold m_0 are dropped; the loss of none is 0.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -127,7 +77,7 @@ inline family_polygon make_hexagon(const glm::dvec3& c, double r) {
     return p;
 }
 
-/// What covers the hemisphere besides the lobe's hexagons (file comment): the rings of radius
+/// What covers the hemisphere besides the lobe's hexagons (polygon_family): the rings of radius
 /// 0.25 and 0.6 rad, or the spiral of 16 centres with 3 radii.
 enum class hemisphere_covering { rings, spiral };
 
@@ -146,17 +96,45 @@ struct integral_family {
     hemisphere_covering covering = hemisphere_covering::rings;
     double floor = 0.01;
 
-    /// The one-lobe `integrals` objective's and the two-LTC table's: the rings, a floor of 1%.
+    /// The one-lobe `integrals` objective's and the two-LTC table's: the rings, a floor of 0.01.
     static constexpr integral_family rings() { return {}; }
     /// The LTC-and-cosine table's: the spiral, a floor at the significance threshold. The default
-    /// quadrature is within 4% of the ground truth on its hexagons (3.9% on its lowest ones,
-    /// which straddle the horizon; the rings' within 3%: tests/test_fit_objective.cpp); with
-    /// m = 12 (within 2.4%) its table came out worse, one node's LTC flipped (README, GGX section).
+    /// quadrature's error on its hexagons (its lowest ones straddle the horizon) and on the
+    /// rings' is bounded by tests/test_fit_objective.cpp; docs/design_notes.md: the finer
+    /// quadrature tried.
     static constexpr integral_family spiral() { return {hemisphere_covering::spiral, significance_threshold}; }
 };
 
-/// The family of the file comment for a lobe of average direction `axis` (unit, in the
-/// xz-plane) and roughness alpha: the lobe's hexagons, then the covering's.
+/// The family for a lobe of average direction `axis` (unit, in the xz-plane) and roughness
+/// alpha: the lobe's hexagons, then the covering's; per node, the same for every candidate M.
+/// Regular spherical hexagons, vertices at angular radius r from their centre c, first vertex at
+/// phase 0.1 rad, edges on great circles:
+///   lobe       radii r_j = r0 (1.2 / r0)^(j / 4), j = 0..4, r0 = clamp(0.7 alpha, 5e-5, 0.3):
+///              from about half the lobe's width (the GGX lobe's half width at half maximum is
+///              about 1.3 alpha in L) to 1.2 rad, geometrically spaced. Centred on the lobe's
+///              average direction A (the fit's axis, ltc/fitting/moments.hpp) for every r_j, and
+///              for j < 4 also centred 2 r_j away from A towards the normal, towards the horizon
+///              and across the plane of incidence (+y): 5 + 12 hexagons;
+///   hemisphere a fixed covering of the upper half-hemisphere y >= 0 (f is symmetric in y):
+///              radius 0.25 rad at elevations 4, 15, 35, 60 deg and azimuths 22.5 + 45 k deg,
+///              k = 0..3, and one at elevation 80 deg, azimuth 22.5 deg: 17 hexagons (the lowest
+///              ring straddles the horizon); and 8 larger ones, radius 0.6 rad, at elevations
+///              12 and 45 deg, azimuths 0, 60, 120, 180 deg (lights of the size that matters
+///              most);
+///   spiral     (hemisphere_covering::spiral, the LTC-and-cosine table's: integral_family::spiral())
+///              instead of the rings above: lights of every size anywhere, the faint tails
+///              included, where the cosine's share of a two-part lobe shows: 16 centres of the
+///              golden-angle spiral over the whole upper hemisphere, uniform in solid angle
+///              (z_i = (i + 1/2) / 16, azimuth i 137.508 deg), each mirrored into y >= 0 (f is
+///              symmetric in y, so a hexagon at the mirrored centre stands for one at the
+///              original; mirroring rather than folding the azimuths into [0, 180) keeps the
+///              centres spread: no direction farther than 0.44 rad from its nearest centre,
+///              tests/test_fit_objective.cpp), with hexagons of radius 0.15, 0.45 and 0.9 rad on
+///              each: 48 hexagons. Its lowest hexagons straddle the horizon in the tails, where
+///              the quadrature is least accurate (integral_family).
+/// This family is deliberately not the grid of examples/ggx_error_report (rectangles, triangles,
+/// pentagons at fixed placements and angular radii whatever the roughness), so that the report
+/// measures generalization (docs/design_notes.md: the nearest placements of the two).
 inline std::vector<family_polygon> polygon_family(const glm::dvec3& axis, double alpha,
                                                   hemisphere_covering covering = hemisphere_covering::rings) {
     std::vector<family_polygon> family;
@@ -207,7 +185,7 @@ inline std::vector<family_polygon> polygon_family(const glm::dvec3& axis, double
     return family;
 }
 
-/// The family and its GGX integrals G_k (file comment), the polygons with G_k below the
+/// The family and its GGX integrals G_k (make_integral_targets), the polygons with G_k below the
 /// significance threshold removed.
 struct integral_targets {
     std::vector<family_polygon> polygons;
@@ -218,7 +196,7 @@ struct integral_targets {
 
 namespace detail {
 
-/// The quadrature's sums G_k over `family` (file comment) of f = Brdf::eval, and, with `fresnel`
+/// The quadrature's sums G_k over `family` (make_integral_targets) of f = Brdf::eval, and, with `fresnel`
 /// not null, of f (1 - V.H)^5 (brdf::schlick_weight, the Fresnel part) from the same samples in
 /// the same pass: each sum is the one make_integral_targets gives for Brdf, or for
 /// brdf::fresnel_part<Brdf>, bit for bit.
@@ -291,10 +269,17 @@ inline integral_targets significant_targets(const std::vector<family_polygon>& f
 
 /// For the view V, roughness alpha, the lobe's average direction `axis` and magnitude: the
 /// polygons of `which` (its covering; its floor goes into the targets), n_b x n_b BRDF samples,
-/// 6 m x m samples per polygon. For the rings, 64, 8: about 1.3 ms per node, within 2.7% of the
-/// Monte Carlo ground truth on every polygon of 9 nodes (theta_v 0 / 60 / 80 deg x roughness
-/// 0.25 / 0.5 / 1); 64, 12 is within 1.4% at twice the cost, and fits tables of the same error
-/// (examples/ggx_error_report, section 8: 6.95% either way).
+/// 6 m x m samples per polygon (by default 64, 8; the accuracy and cost of other sizes:
+/// docs/design_notes.md).
+///
+/// Both integrals are deterministic. The LTC's in closed form, with the horizon clipped in LTC
+/// space as horizon_clipping::ltc_space does (transformed<clamped_cosine<double>>::integrate).
+/// GGX's once per node, by a two-technique quadrature with the balance heuristic: n_b x n_b
+/// midpoint samples through Brdf::sample (shared by all polygons), and, per polygon, 6 m x m
+/// midpoint samples uniform in its gnomonic projection (the planar hexagon tangent at c, cut
+/// into 6 triangles; density on the sphere 1 / (A (L.c)^3), A the planar area):
+///   G_k = sum_{brdf i, L_i in P_k} f_i / (N_b p_b + N_k p_k) + sum_{poly j} f_j / (N_b p_b + N_k p_k).
+/// Polygons with G_k < 1e-3 magnitude are dropped (the error report's significance threshold).
 template <template <typename> class Brdf>
 integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude,
                                        int n_b = default_brdf_samples, int m = default_polygon_samples,
@@ -309,7 +294,9 @@ integral_targets make_integral_targets(const glm::dvec3& V, double alpha, const 
 /// the integral of the Fresnel part over the hemisphere, in the place of the magnitude) over the
 /// same family, from one pass of the quadrature (the two-lobe fits' split of the Fresnel term,
 /// ltc/fitting/fit_two_lobes.hpp): each the same bits as make_integral_targets gives for Brdf and
-/// for brdf::fresnel_part<Brdf>, at about the cost of one.
+/// for brdf::fresnel_part<Brdf>, at about the cost of one. The same samples give the integrals
+/// of f (1 - V.H)^5 in place of f; their error against the ground truth on both families'
+/// hexagons is bounded by tests/test_fit_objective.cpp.
 template <template <typename> class Brdf>
 std::pair<integral_targets, integral_targets> make_integral_targets_with_fresnel(
     const glm::dvec3& V, double alpha, const glm::dvec3& axis, double magnitude, double fresnel,
@@ -338,7 +325,11 @@ void ltc_integrals(const integral_targets& t, const glm::dmat3& m_inv, double* o
 
 /// (1/K) sum_k ((magnitude I_k - G_k) / (G_k + floor m_0))^2 (0 when no polygon is
 /// significant; floor = t.floor, m_0 = t.magnitude): the relative error, softened for the faint
-/// polygons (file comment).
+/// polygons. The floor f is a fraction of the magnitude (the albedo) in the denominator. With the
+/// rings f = 0.01: without a floor the faint tails (which a single lobe cannot follow everywhere)
+/// outvote the few polygons on the peak; squared rather than absolute for a smooth objective.
+/// With the spiral the floor is the significance threshold, 1e-3 m_0: the tails count as relative
+/// errors, as the error report counts them, and a lobe of two parts can follow them.
 inline double integral_loss(const integral_targets& t, const glm::dmat3& m_inv, double magnitude) {
     const auto D = transformed<clamped_cosine<double>>::from_inverse(m_inv);
     const double floor = t.floor * t.magnitude;

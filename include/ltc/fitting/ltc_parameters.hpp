@@ -30,6 +30,19 @@ inline glm::dvec3 normalize_or_zero(const glm::dvec3& v) {
 }
 
 /// M = R * [m11 0 m13; 0 m22 0; m31 0 1] with R the rotation about y taking +z to `axis`.
+///
+/// What is fitted. For a view direction V = (sin theta_v, 0, cos theta_v) (local frame N = +z)
+/// and a roughness alpha, the spherical function f(L) = rho(V, L) cos(theta_L) (Brdf::eval) is
+/// approximated by magnitude * D(L), D the linearly transformed cosine of the matrix
+///
+///   M = R * [m11 0 m13; 0 m22 0; m31 0 1]     (rows; GLM stores M[column][row])
+///
+/// where R is the rotation about y that takes +z to the BRDF's average direction (the direction
+/// of the integral of f(L) L, y component zeroed). That is the paper's 4-parameter matrix
+/// [a 0 b; 0 c 0; d 0 1] written in the rotated frame: the general matrix of an isotropic BRDF
+/// up to scale. (The paper's code release keeps m31 = 0 and fits 3 parameters; options::
+/// parameters = 3 does the same.) At normal incidence the lobe is rotationally symmetric and
+/// M = diag(m, m, 1) has one parameter.
 struct ltc_parameters {
     double m11 = 1, m22 = 1, m13 = 0, m31 = 0;
     glm::dvec3 axis{0, 0, 1};  ///< unit, in the xz-plane

@@ -1,5 +1,7 @@
 // ltc/reference/ground_truth.hpp -- Monte Carlo ground truth for polygonal lights: the integral of a BRDF
-// model's rho(V, L) cos(theta_L) over a spherical polygon, with its standard error.
+// model's rho(V, L) cos(theta_L) over a spherical polygon, with its standard error: the reference
+// that the LTC shading is compared against (paper section 4's target, integrated over a polygon
+// instead of fitted).
 //
 //   #include <ltc/reference/ground_truth.hpp>
 //   #include <ltc/brdf/ggx.hpp>
@@ -8,40 +10,9 @@
 //       ltc::brdf::ggx<double>{}, V, alpha, vertices, n, opt);
 //   // e.mean +- e.standard_error, after e.samples iterations
 //
-// This is the reference that the LTC shading is measured against (paper section 4's target,
-// integrated over a polygon instead of fitted). It works in double, in the local shading frame
-// of ltc/brdf/model.hpp (N = +z, V.z > 0), and is not meant for a renderer's hot path (it
-// allocates one small vector per polygon).
-//
-// Estimator. Each iteration draws one direction from each of two techniques and combines them
-// with multiple importance sampling (Veach and Guibas 1995; one sample per technique, so
-// the balance heuristic weight of technique k is p_k / (p_brdf + p_polygon)):
-//   - BRDF sampling: L ~ model.sample(V, u, alpha), density model.pdf(V, L, alpha);
-//   - polygon sampling: L uniform in solid angle over the spherical polygon
-//     (ltc/reference/spherical_polygon.hpp).
-// The integrand is model.eval(V, L, alpha) times the polygon's indicator, so the estimate is
-// the integral over the *set* of directions that the polygon covers, whatever its winding:
-// the two-sided integral. A one-sided light is 0 from behind; multiply by the facing yourself.
-// The iterations are independent, so the standard error is the sample standard deviation of
-// the per-iteration values over sqrt(iterations) (Welford's update, in double).
-//
-// The pieces, each of which can be included on its own:
-//   ltc/reference/splitmix64.hpp          splitmix64, the seeded random numbers
-//   ltc/reference/spherical_triangle.hpp  spherical_triangle_sampler, sample_spherical_triangle
-//                                         (Arvo 1995)
-//   ltc/reference/spherical_polygon.hpp   spherical_polygon: polygon sampling, its density and
-//                                         the winding number
-// This header holds the estimator itself: options, estimate, integrate.
-//
-// Determinism: a fixed seed gives the same random numbers on every platform (SplitMix64,
-// doubles from the top 53 bits, no <random> distribution, drawn in a sequenced order), hence
-// the same estimate up to the last-bit differences of the platform's libm.
-//
-// Caveat: the standard error is estimated from the iterations, so it cannot see events that
-// have not happened. For a light much smaller than the BRDF lobe, BRDF samples hit it so rarely
-// (and then carry a tiny weight) that a run may see none; the estimate is then low by that
-// technique's share, about Omega * p_brdf / (1 + Omega * p_brdf) of the integral (1.5e-5 for the
-// 5e-5 sr triangle of the tests), which the standard error does not include.
+// Conventions: double, the local shading frame of ltc/brdf/model.hpp (N = +z, V.z > 0); the
+// two-sided integral, whatever the winding. Degenerate cases: a polygon of no solid angle gives
+// the zero estimate. Not for a renderer's hot path (one small vector per polygon).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -92,6 +63,35 @@ struct estimate {
 /// Monte Carlo estimate of int_P model.eval(V, L, alpha) dL over the spherical polygon
 /// vertices[0..n) (local frame, N = +z). Model: any type with eval/pdf/sample as in
 /// ltc/brdf/model.hpp for T = double, called through an instance so that stateful models work.
+///
+/// Estimator. Each iteration draws one direction from each of two techniques and combines them
+/// with multiple importance sampling (Veach and Guibas 1995; one sample per technique, so
+/// the balance heuristic weight of technique k is p_k / (p_brdf + p_polygon)):
+///   - BRDF sampling: L ~ model.sample(V, u, alpha), density model.pdf(V, L, alpha);
+///   - polygon sampling: L uniform in solid angle over the spherical polygon
+///     (ltc/reference/spherical_polygon.hpp).
+/// The integrand is model.eval(V, L, alpha) times the polygon's indicator, so the estimate is
+/// the integral over the *set* of directions that the polygon covers, whatever its winding:
+/// the two-sided integral. A one-sided light is 0 from behind; multiply by the facing yourself.
+/// The iterations are independent, so the standard error is the sample standard deviation of
+/// the per-iteration values over sqrt(iterations) (Welford's update, in double).
+///
+/// The pieces, each of which can be included on its own:
+///   ltc/reference/splitmix64.hpp          splitmix64, the seeded random numbers
+///   ltc/reference/spherical_triangle.hpp  spherical_triangle_sampler, sample_spherical_triangle
+///                                         (Arvo 1995)
+///   ltc/reference/spherical_polygon.hpp   spherical_polygon: polygon sampling, its density and
+///                                         the winding number
+///
+/// Determinism: a fixed seed gives the same random numbers on every platform (SplitMix64,
+/// doubles from the top 53 bits, no <random> distribution, drawn in a sequenced order), hence
+/// the same estimate up to the last-bit differences of the platform's libm.
+///
+/// Caveat: the standard error is estimated from the iterations, so it cannot see events that
+/// have not happened. For a light much smaller than the BRDF lobe, BRDF samples hit it so rarely
+/// (and then carry a tiny weight) that a run may see none; the estimate is then low by that
+/// technique's share, about Omega * p_brdf / (1 + Omega * p_brdf) of the integral (1.5e-5 for the
+/// 5e-5 sr triangle of the tests), which the standard error does not include.
 template <typename Model>
 estimate integrate(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3* vertices,
                    std::size_t n, const options& opt = {}) {

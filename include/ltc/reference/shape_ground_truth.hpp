@@ -10,46 +10,9 @@
 //   gt::estimate l = gt::integrate_line(model, V, alpha, p0, p1, opt);  // lim tube / (2 radius)
 //
 // Conventions as in ground_truth.hpp: double, the local shading frame (N = +z, V.z > 0, the
-// shading point at the origin), the same options (seed, heuristic, adaptive batches; the light
-// sampler plays the part of the polygon sampler, so techniques::polygon_only means "light sampling
-// only") and the same estimate. Unlike integrate(), directions with L.z <= 0 contribute 0 whatever
-// the model returns there (a light partly below the horizon is clipped).
-//
-// Estimator (sphere, disk, tube): per iteration one BRDF sample (model.sample, density model.pdf)
-// and one light sample, combined by MIS (Veach and Guibas 1995, one sample per technique). A BRDF
-// sample counts when its ray meets the light; the light's density is taken at the ray's *first*
-// intersection. Standard error: as in ground_truth.hpp (Welford; the same caveat). Light samplers:
-//   - sphere: uniform in the cone it subtends, density 1 / (2 pi (1 - cos theta_max)), with
-//     1 - cos = sin^2 / (1 + cos) and the membership test |L - axis|^2 / 2 <= 1 - cos (accurate for
-//     tiny cones). Shading point inside or on the sphere: every direction is covered, the sampler is
-//     uniform on the sphere (1 / (4 pi)) and the result is the BRDF's integral over the upper
-//     hemisphere (its directional albedo).
-//   - disk: uniform in area (Shirley and Chiu's concentric mapping), in solid angle
-//     dist^2 / (area |cos at the light|). A one-sided disk emits towards +normal only.
-//   - tube: an open cylinder of radius r around the segment p0-p1, no end caps, both faces
-//     emitting: the directions whose ray meets the lateral surface (through an open end too).
-//     Uniform area sampling of the whole lateral surface; a point that is not the first hit of its
-//     ray is rejected (contributes 0), so a direction's density is dist^2 / (area |cos|) at its
-//     first hit. Visibility without tolerance: an entry point of the infinite cylinder is a first
-//     hit; an exit point is hidden iff the entry root (product of the roots c / a) is at t > 0
-//     within the segment's span.
-//
-// Line (the thin-tube limit; light sampling only, opt.use and opt.weighting are ignored: BRDF
-// samples hit a line with probability 0). A cylinder of radius r is 2r/|x| wide at its axis point
-// x (across the plane of the origin and the axis), and an axis element dl spans dl sin(phi)/|x| in
-// that plane, phi the angle between the axis and x, sin(phi) = d/|x| (d: the distance from the
-// origin to the axis line). So dw = 2r d/|x|^3 dl + O(r^2) and
-//   I_line = lim_{r->0} integrate_tube / (2r) = int_{p0}^{p1} f(x/|x|) d/|x|^3 dl   (1/length).
-// With the foot point d n (n unit), tangent t, x = d n + l t and s = l/|x| = sin(theta):
-// dl = |x|^3/d^2 ds, so I_line = (1/d) int_{s_0}^{s_1} f(sqrt(1 - s^2) n + s t) ds, estimated with s
-// uniform (weight (s_1 - s_0)/d) after clipping the segment to z >= 0 (x.z is linear in l: the
-// same line). s_1 - s_0 = d^2 L (l_0 + l_1) / ((l_1 |x_0| + l_0 |x_1|) |x_0| |x_1|) when l_0 l_1 > 0
-// (no cancellation for a segment nearly pointing at the origin).
-//
+// shading point at the origin), the same options and estimate; directions with L.z <= 0 count 0.
 // Degenerate input gives the zero estimate: radius <= 0, p0 = p1, a zero normal, a light entirely
-// below the horizon, a one-sided disk seen from behind or edge-on, a line whose axis passes through
-// the origin (edge-on: the limit for a segment pointing at the origin, a convention for one through
-// it, as in ltc/core/line_integral.hpp). A shading point exactly on a tube's surface is unsupported.
+// below the horizon, a one-sided disk seen from behind or edge-on, a line through the origin.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -222,7 +185,24 @@ struct tube_area {
 }  // namespace shape_detail
 
 /// Monte Carlo estimate of int model.eval(V, L, alpha) dL over the directions (L.z > 0) of the
-/// sphere of the given centre and radius (file comment; inside: the full upper hemisphere).
+/// sphere of the given centre and radius (inside: the full upper hemisphere).
+///
+/// Conventions as in ground_truth.hpp: the same options (seed, heuristic, adaptive batches; the
+/// light sampler plays the part of the polygon sampler, so techniques::polygon_only means "light
+/// sampling only") and the same estimate. Unlike integrate(), directions with L.z <= 0 contribute
+/// 0 whatever the model returns there (a light partly below the horizon is clipped).
+///
+/// Estimator (sphere, disk, tube): per iteration one BRDF sample (model.sample, density model.pdf)
+/// and one light sample, combined by MIS (Veach and Guibas 1995, one sample per technique). A BRDF
+/// sample counts when its ray meets the light; the light's density is taken at the ray's *first*
+/// intersection. Standard error: as in ground_truth.hpp (Welford; the same caveat).
+///
+/// The sphere's sampler: uniform in the cone it subtends, density 1 / (2 pi (1 - cos theta_max)),
+/// with 1 - cos = sin^2 / (1 + cos) and the membership test |L - axis|^2 / 2 <= 1 - cos (accurate
+/// for tiny cones). Shading point inside or on the sphere: every direction is covered, the sampler
+/// is uniform on the sphere (1 / (4 pi)) and the result is the BRDF's integral over the upper
+/// hemisphere (its directional albedo). Zero estimate: radius <= 0, or the sphere entirely below
+/// the horizon.
 template <typename Model>
 estimate integrate_sphere(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3& centre,
                           double radius, const options& opt = {}) {
@@ -239,6 +219,9 @@ estimate integrate_sphere(const Model& model, const glm::dvec3& V, double alpha,
 
 /// Monte Carlo estimate of int model.eval(V, L, alpha) dL over the directions (L.z > 0) of the
 /// disk of the given centre, normal (any length) and radius; a one-sided disk emits towards +normal.
+/// Estimator: integrate_sphere's, the light sampler uniform in area (Shirley and Chiu's concentric
+/// mapping), in solid angle dist^2 / (area |cos at the light|). Zero estimate: radius <= 0, a zero
+/// normal, a disk seen edge-on, or a one-sided disk seen from behind.
 template <typename Model>
 estimate integrate_disk(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3& centre,
                         const glm::dvec3& normal, double radius, bool two_sided, const options& opt = {}) {
@@ -254,6 +237,13 @@ estimate integrate_disk(const Model& model, const glm::dvec3& V, double alpha, c
 
 /// Monte Carlo estimate of int model.eval(V, L, alpha) dL over the directions (L.z > 0) whose ray
 /// meets the open cylinder (no end caps) of the given radius around the segment p0-p1.
+/// Estimator: integrate_sphere's, both faces emitting: the directions whose ray meets the lateral
+/// surface (through an open end too). Uniform area sampling of the whole lateral surface; a point
+/// that is not the first hit of its ray is rejected (contributes 0), so a direction's density is
+/// dist^2 / (area |cos|) at its first hit. Visibility without tolerance: an entry point of the
+/// infinite cylinder is a first hit; an exit point is hidden iff the entry root (product of the
+/// roots c / a) is at t > 0 within the segment's span. Zero estimate: radius <= 0, p0 = p1, or the
+/// tube entirely below the horizon; a shading point exactly on the tube's surface is unsupported.
 template <typename Model>
 estimate integrate_tube(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3& p0,
                         const glm::dvec3& p1, double radius, const options& opt = {}) {
@@ -270,7 +260,22 @@ estimate integrate_tube(const Model& model, const glm::dvec3& V, double alpha, c
 }
 
 /// Monte Carlo estimate of the thin-line integral lim_{r->0} integrate_tube(..., r) / (2r) =
-/// int_{p0}^{p1} model.eval(V, x/|x|, alpha) d/|x|^3 dl (file comment), in 1/length.
+/// int_{p0}^{p1} model.eval(V, x/|x|, alpha) d/|x|^3 dl, in 1/length.
+///
+/// Light sampling only (opt.use and opt.weighting are ignored: BRDF samples hit a line with
+/// probability 0). A cylinder of radius r is 2r/|x| wide at its axis point x (across the plane of
+/// the origin and the axis), and an axis element dl spans dl sin(phi)/|x| in that plane, phi the
+/// angle between the axis and x, sin(phi) = d/|x| (d: the distance from the origin to the axis
+/// line). So dw = 2r d/|x|^3 dl + O(r^2) and
+///   I_line = lim_{r->0} integrate_tube / (2r) = int_{p0}^{p1} f(x/|x|) d/|x|^3 dl   (1/length).
+/// With the foot point d n (n unit), tangent t, x = d n + l t and s = l/|x| = sin(theta):
+/// dl = |x|^3/d^2 ds, so I_line = (1/d) int_{s_0}^{s_1} f(sqrt(1 - s^2) n + s t) ds, estimated with
+/// s uniform (weight (s_1 - s_0)/d) after clipping the segment to z >= 0 (x.z is linear in l: the
+/// same line). s_1 - s_0 = d^2 L (l_0 + l_1) / ((l_1 |x_0| + l_0 |x_1|) |x_0| |x_1|) when
+/// l_0 l_1 > 0 (no cancellation for a segment nearly pointing at the origin). Zero estimate:
+/// p0 = p1, the segment entirely below the horizon, or its axis passing through the origin
+/// (edge-on: the limit for a segment pointing at the origin, a convention for one through it, as
+/// in ltc/core/line_integral.hpp).
 template <typename Model>
 estimate integrate_line(const Model& model, const glm::dvec3& V, double alpha, glm::dvec3 p0, glm::dvec3 p1,
                         const options& opt = {}) {

@@ -5,16 +5,10 @@
 //   const ltc::ground_truth::spherical_polygon poly(vertices, n);
 //   glm::dvec3 w = poly.sample(u);    // u in [0, 1)^3; density poly.pdf(w)
 //
-// Polygon sampling. The polygon is triangulated as a fan from vertex 0; each fan triangle is
-// the projection of a planar triangle that does not contain the origin, so it lies in an open
-// hemisphere. A triangle is chosen with probability proportional to its solid angle (Van
-// Oosterom and Strackee 1983) and sampled uniformly by Arvo's method (Arvo 1995, "Stratified
-// sampling of spherical triangles", SIGGRAPH; in the arrangement of pbrt-v4's
-// SampleSphericalTriangle). Non-convex polygons are handled exactly: fan triangles whose
-// orientation opposes the polygon's (they cancel parts of other triangles) are never sampled,
-// the density at w is (number of same-orientation fan triangles containing w) / (their total
-// solid angle), and a sample that lands where the winding number is 0 contributes 0. For a
-// convex polygon this is exactly uniform: density 1 / Omega inside.
+// Conventions: double, directions seen from the origin; a fan from vertex 0, each triangle chosen
+// by solid angle (Van Oosterom and Strackee 1983) and sampled by Arvo's method (Arvo 1995).
+// Degenerate cases: non-convex polygons are handled exactly (spherical_polygon); a polygon of no
+// solid angle is empty().
 #pragma once
 
 #include <ltc/config.hpp>
@@ -34,7 +28,18 @@ LTC_NAMESPACE_BEGIN
 namespace ground_truth {
 
 /// A spherical polygon seen from the origin, triangulated as a fan from vertex 0: uniform
-/// sampling, its density and the winding number (file comment).
+/// sampling, its density and the winding number.
+///
+/// Polygon sampling. The polygon is triangulated as a fan from vertex 0; each fan triangle is
+/// the projection of a planar triangle that does not contain the origin, so it lies in an open
+/// hemisphere. A triangle is chosen with probability proportional to its solid angle (Van
+/// Oosterom and Strackee 1983) and sampled uniformly by Arvo's method (Arvo 1995, "Stratified
+/// sampling of spherical triangles", SIGGRAPH; in the arrangement of pbrt-v4's
+/// SampleSphericalTriangle). Non-convex polygons are handled exactly: fan triangles whose
+/// orientation opposes the polygon's (they cancel parts of other triangles) are never sampled,
+/// the density at w is (number of same-orientation fan triangles containing w) / (their total
+/// solid angle), and a sample that lands where the winding number is 0 contributes 0. For a
+/// convex polygon this is exactly uniform: density 1 / Omega inside.
 class spherical_polygon {
   public:
     /// vertices[0..n): a simple planar polygon (any scale, any winding) that does not contain

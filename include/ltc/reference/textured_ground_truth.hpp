@@ -10,21 +10,9 @@
 //
 // Frame: the local shading frame of ltc/brdf/model.hpp (shading point at the origin, N = +z).
 // The quad quad[0..3] carries uv (0,0), (1,0), (1,1), (0,1) on the parallelogram q_0 + u (q_1 -
-// q_0) + v (q_3 - q_0), the mapping of ltc/shading/textured_light.hpp. The integral is over the set of
-// directions that hit the quad, whatever its orientation (two-sided).
-//
-// Estimator: per iteration, one direction from each of two techniques, combined by multiple
-// importance sampling with the balance heuristic (Veach and Guibas 1995):
-//   - lobe sampling: w ~ lobe.sample(u), density lobe.pdf(w) per steradian;
-//   - area sampling: a point x = q_0 + u e_1 + v e_3 with (u, v) of density p_uv (uniform on
-//     [0, 1]^2 by default; optionally the defensive mixture 1/2 uniform + 1/2 piecewise constant
-//     proportional to given texel weights, e.g. the texels' luminance: see texel_distribution,
-//     which puts samples on a small bright detail), w = x / |x|, density per steradian
-//     p_A(w) = p_uv(u, v) |x|^2 / (A |cos theta_x|) (theta_x between w and the quad's normal).
-// Each sample contributes f(w) L(uv(w)) / (p_lobe(w) + p_A(w)) (balance heuristic, one sample
-// per technique), so the iteration's value is unbiased; iterations are independent and the
-// standard error is the per-channel sample standard deviation over sqrt(iterations).
-// Deterministic for a fixed seed (SplitMix64, doubles from the top 53 bits).
+// q_0) + v (q_3 - q_0), the mapping of ltc/shading/lights/textured_quad_light.hpp. The integral is
+// over the set of directions that hit the quad, whatever its orientation (two-sided). Degenerate
+// cases: a zero-area quad gives 0. Deterministic for a fixed seed (the estimator: integrate).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -148,8 +136,21 @@ struct parallelogram {
 
 }  // namespace detail
 
-/// The integral of L(uv(w)) lobe(w) over the quad (file comment). radiance(u, v) -> glm::dvec3
-/// (convertible). A degenerate quad (zero area) gives 0.
+/// The integral of L(uv(w)) lobe(w) over the quad. radiance(u, v) -> glm::dvec3 (convertible).
+/// A degenerate quad (zero area) gives 0.
+///
+/// Estimator: per iteration, one direction from each of two techniques, combined by multiple
+/// importance sampling with the balance heuristic (Veach and Guibas 1995):
+///   - lobe sampling: w ~ lobe.sample(u), density lobe.pdf(w) per steradian;
+///   - area sampling: a point x = q_0 + u e_1 + v e_3 with (u, v) of density p_uv (uniform on
+///     [0, 1]^2 by default; optionally the defensive mixture 1/2 uniform + 1/2 piecewise constant
+///     proportional to given texel weights, e.g. the texels' luminance: see texel_distribution,
+///     which puts samples on a small bright detail), w = x / |x|, density per steradian
+///     p_A(w) = p_uv(u, v) |x|^2 / (A |cos theta_x|) (theta_x between w and the quad's normal).
+/// Each sample contributes f(w) L(uv(w)) / (p_lobe(w) + p_A(w)) (balance heuristic, one sample
+/// per technique), so the iteration's value is unbiased; iterations are independent and the
+/// standard error is the per-channel sample standard deviation over sqrt(iterations).
+/// Deterministic for a fixed seed (SplitMix64, doubles from the top 53 bits).
 template <typename Lobe, typename Radiance>
 inline estimate integrate(const Lobe& lobe, const glm::dvec3 quad[4], const Radiance& radiance,
                           const options& opt = options(), const texel_distribution* area_density = nullptr) {

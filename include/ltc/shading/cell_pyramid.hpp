@@ -4,22 +4,10 @@
 //   ltc::cell_pyramid<float> cells(width, height, rgb);    // or light_texture::cells()
 //   glm::vec3 c = cells.mean(level, i, j);                 // the mean of the cell's texels
 //
-// Level 0 is the image itself: texel (x, y) is the constant L(x, y) on the uv rectangle
-// [x / width, (x + 1) / width] x [y / height, (y + 1) / height] (v = 0 on the first row, as in
-// ltc/shading/light_texture.hpp). Cell (i, j) of level k covers the texels [i 2^k, (i + 1) 2^k)
-// x [j 2^k, (j + 1) 2^k), clipped to the image (non-power-of-two sizes: the last cell of a row or
-// column is narrower), and holds their mean and their range (the largest max - min over the
-// three channels). The last level is one cell, the whole image. A cell's children are the cells
-// of level k - 1 inside it (one to four).
-//
-// Why means and ranges: the integral of L D over a cell is mean(cell) I_D(cell) plus
-// sum_t (L_t - mean) I_D(t) over its texels t, and since every I_D(t) >= 0 (one orientation for
-// all cells) that remainder is at most range(cell) I_D(cell) per channel. The quadtree of
-// ltc/shading/textured_cells.hpp refines the cell with the largest such bound.
-//
-// Storage: sum_k cells(k) (3 + 1) T, about (4/3) width height 16 bytes in float (22 MB for
-// 1024 x 1024); built in O(width height), each level from the one below (sums, extremes and
-// counts in double, kept for the level below only).
+// Each cell holds the mean and the range of its texels: the integral of L D over a cell is
+// mean(cell) I_D(cell) to within range(cell) I_D(cell) per channel. Conventions: texel (x, y)
+// covers [x / width, (x + 1) / width] x [y / height, (y + 1) / height], v = 0 on the first row
+// (as ltc/shading/light_texture.hpp); level 0 is the image, the last level one cell (cell_pyramid).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -34,6 +22,22 @@
 
 LTC_NAMESPACE_BEGIN
 
+/// Level 0 is the image itself: texel (x, y) is the constant L(x, y) on the uv rectangle
+/// [x / width, (x + 1) / width] x [y / height, (y + 1) / height] (v = 0 on the first row, as in
+/// ltc/shading/light_texture.hpp). Cell (i, j) of level k covers the texels [i 2^k, (i + 1) 2^k)
+/// x [j 2^k, (j + 1) 2^k), clipped to the image (non-power-of-two sizes: the last cell of a row or
+/// column is narrower), and holds their mean and their range (the largest max - min over the
+/// three channels). The last level is one cell, the whole image. A cell's children are the cells
+/// of level k - 1 inside it (one to four).
+///
+/// Why means and ranges: the integral of L D over a cell is mean(cell) I_D(cell) plus
+/// sum_t (L_t - mean) I_D(t) over its texels t, and since every I_D(t) >= 0 (one orientation for
+/// all cells) that remainder is at most range(cell) I_D(cell) per channel. The quadtree of
+/// ltc/shading/textured_cells.hpp refines the cell with the largest such bound.
+///
+/// Storage: sum_k cells(k) (3 + 1) T, about (4/3) width height 16 bytes in float (22 MB for
+/// 1024 x 1024); built in O(width height), each level from the one below (sums, extremes and
+/// counts in double, kept for the level below only).
 template <typename T>
 class cell_pyramid {
   public:

@@ -1,46 +1,18 @@
 // ltc/shading/clipless.hpp -- horizon clipping without clipping: the sphere approximation of Hill and
-// Heitz 2016 ("Real-Time Area Lighting: a Journey from Research to Production", SIGGRAPH
-// course; the Chinese production note of this project, section "水平面裁切").
+// Heitz 2016 ("Real-Time Area Lighting: a Journey from Research to Production", SIGGRAPH course).
 //
 //   #include <ltc/shading/clipless.hpp>
 //   float e = ltc::clipless::integrate(d, vertices, n, ltc::sidedness::one_sided,
 //                                      ltc::clipless::method::analytic);
 //
 // Instead of clipping M^-1 P to the horizon (a branchy polygon clip in a shader), compute the
-// *unclipped* vector form factor F of M^-1 P (ltc::vector_form_factor), replace the polygon by
-// the sphere with the same vector form factor -- a sphere of angular radius sigma around the
-// unit direction u has F = sin^2(sigma) u -- and return that sphere's horizon-clipped form
-// factor:
+// *unclipped* vector form factor F of M^-1 P (ltc::vector_form_factor), replace the polygon by the
+// sphere with the same vector form factor (angular radius sigma around the unit direction u:
+// F = sin^2(sigma) u) and return that sphere's horizon-clipped form factor, with
 //
 //   f = |F| = sin^2(sigma),   cos(omega) = u.z = +-F.z / |F|
 //
-// (the sign: see "Orientation" in ltc/shading/equivalent_sphere.hpp).
-//
-// The pieces, each of which can be included on its own:
-//   ltc/core/sphere_form_factor.hpp  sphere_form_factor: the sphere's clipped form factor
-//                                       (Snyder 1996), evaluated without cancellation
-//   ltc/shading/sphere_table.hpp        the same as a 32 x 32 table (sphere_table,
-//                                       fill_sphere_table, sphere_form_factor_table)
-//   ltc/shading/equivalent_sphere.hpp   the sphere of a polygon and its orientation
-//                                       (equivalent_sphere, sphere_of_polygon)
-// This header joins them: form_factor(_signed) of a polygon, integrate(_signed) of a transformed
-// clamped cosine (the sphere of M^-1 P).
-//
-// Where it breaks down (measured in tests/test_clipless.cpp and examples/ggx_error_report/):
-// the approximation is exact when the polygon and its sphere are both entirely above the
-// horizon (both integrals are then F.z; the sphere is above iff cos(omega) >= sin(sigma), i.e.
-// F.z >= |F|^(3/2)) or both entirely below (both 0), and for caps. Otherwise the sphere
-// replaces the polygon's own clipping by a cap's: a polygon above the horizon whose sphere
-// dips below it gets more than F.z (the clipped sphere integral exceeds its unclipped one), a
-// polygon that dips below the horizon under a sphere that does not gets F.z instead of more,
-// and a polygon straddling the horizon gets a cap's clipped share instead of its own. The
-// error grows with how un-cap-like the polygon is: a polygon elongated along the horizon has a
-// sphere much taller than itself, and the part above the horizon can be a thin sliver that
-// no cap represents (relative errors of several hundred percent of a small value). Compact
-// polygons (squares, equilateral triangles) stay within about 1.2% of |F|; 16:1 rectangles lying
-// along the horizon reach 19% of |F|. After M^-1 a sharp lobe (small roughness) stretches a
-// light into a large, elongated polygon, so the worst cases are low roughness with lights near
-// the horizon.
+// (the sign: "Orientation" in ltc/shading/equivalent_sphere.hpp; where it breaks down: integrate).
 #pragma once
 
 #include <ltc/shading/equivalent_sphere.hpp>   // equivalent_sphere, sphere_of_polygon
@@ -59,6 +31,16 @@
 #include <cstddef>
 
 LTC_NAMESPACE_BEGIN
+
+// The pieces, each of which can be included on its own:
+//   ltc/core/sphere_form_factor.hpp  sphere_form_factor: the sphere's clipped form factor
+//                                       (Snyder 1996), evaluated without cancellation
+//   ltc/shading/sphere_table.hpp        the same as a 32 x 32 table (sphere_table,
+//                                       fill_sphere_table, sphere_form_factor_table)
+//   ltc/shading/equivalent_sphere.hpp   the sphere of a polygon and its orientation
+//                                       (equivalent_sphere, sphere_of_polygon)
+// This namespace joins them: form_factor(_signed) of a polygon, integrate(_signed) of a
+// transformed clamped cosine (the sphere of M^-1 P).
 namespace clipless {
 
 /// How the horizon-clipped sphere form factor is evaluated.
@@ -120,6 +102,22 @@ inline T integrate_signed(const transformed<clamped_cosine<T, Policy>>& d, const
 }
 
 /// Clipless approximation of d.integrate(vertices, n, side).
+///
+/// Where it breaks down (tests/test_clipless.cpp and examples/ggx_error_report/ measure it): the
+/// approximation is exact when the polygon and its sphere are both entirely above the horizon
+/// (both integrals are then F.z; the sphere is above iff cos(omega) >= sin(sigma), i.e.
+/// F.z >= |F|^(3/2)) or both entirely below (both 0), and for caps. Otherwise the sphere
+/// replaces the polygon's own clipping by a cap's: a polygon above the horizon whose sphere
+/// dips below it gets more than F.z (the clipped sphere integral exceeds its unclipped one), a
+/// polygon that dips below the horizon under a sphere that does not gets F.z instead of more,
+/// and a polygon straddling the horizon gets a cap's clipped share instead of its own. The
+/// error grows with how un-cap-like the polygon is: a polygon elongated along the horizon has a
+/// sphere much taller than itself, and the part above the horizon can be a thin sliver that
+/// no cap represents (relative errors of several hundred percent of a small value). Compact
+/// polygons (squares, equilateral triangles) stay closest; rectangles lying along the horizon
+/// are off by a share of |F| that grows with their aspect ratio (docs/design_notes.md). After
+/// M^-1 a sharp lobe (small roughness) stretches a light into a large, elongated polygon, so the
+/// worst cases are low roughness with lights near the horizon.
 template <typename T, typename Policy>
 inline T integrate(const transformed<clamped_cosine<T, Policy>>& d, const glm::vec<3, T>* vertices, std::size_t n,
                    sidedness side, method how = method::analytic) {

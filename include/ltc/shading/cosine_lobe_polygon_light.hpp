@@ -12,13 +12,6 @@
 //   #include <ltc/shading/cosine_lobe_polygon_light.hpp>
 //   ltc::polygon_light_result<float> r = ltc::shade_polygon_light_cosine_lobe(
 //       P, N, V, roughness, F0, albedo, radiance, vertices, n, ltc::sidedness::one_sided);
-//
-// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light_one_lobe,
-// and the same integrals (one form factor, one LTC integral): the extra cost is the second table
-// fetch.
-// The cosine's integral is the form factor of the clipping mode, which is its exact integral
-// with ltc_space and shading_first clipping (the cosine needs no clipping in its own space but
-// the horizon's) and the clipless approximation with the sphere modes.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -50,6 +43,11 @@ inline polygon_light_result<T> shade_polygon_light_cosine_lobe(
 /// Deprecated: ltc::shade<ltc::ggx::ltc_and_cosine> (ltc/shading/shade.hpp).
 /// Shading with the GGX table of an LTC and the cosine: cos theta_v from N and V, both lobes from
 /// ggx_cosine_lobe::fetch(cos theta_v, roughness) (alpha = roughness^2).
+/// Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light_one_lobe,
+/// and the same integrals (one form factor, one LTC integral): the extra cost is the second table
+/// fetch. The cosine's integral is the form factor of the clipping mode, which is its exact
+/// integral with ltc_space and shading_first clipping (the cosine needs no clipping in its own
+/// space but the horizon's) and the clipless approximation with the sphere modes.
 template <typename Policy = edge_policy::automatic, typename T>
 inline polygon_light_result<T> shade_polygon_light_cosine_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>& N,
                                                                const glm::vec<3, T>& V, T roughness,

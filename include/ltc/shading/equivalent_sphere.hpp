@@ -6,15 +6,9 @@
 //   #include <ltc/shading/equivalent_sphere.hpp>
 //   ltc::clipless::equivalent_sphere<float> s = ltc::clipless::sphere_of_polygon(vertices, n);
 //
-// Orientation. The sphere forgets which side of the polygon faces the shading point (Hill
-// 2016 tests the light's plane equation in the shader). Here the polygon is oriented by the
-// sign of p0 . sum_i p_i x p_i+1 (Newell's normal: positive when the vertices turn clockwise
-// as seen from the origin, the convention of polygon.hpp), in the space where the vertices are
-// given, times the sign of |M^-1|. For a front-facing polygon F points towards it; for a
-// back-facing one F is flipped before the lookup. The result is signed like every integral of
-// the library (positive for a front face) and sidedness applies as usual: one_sided gives 0 for
-// a back face, two_sided the same value for both faces. The polygon must be planar (true for
-// any light and its image under M^-1); for non-planar input the sign test is meaningless.
+// Conventions: signed like every integral of the library, positive for a front face (the vertices
+// turning clockwise as seen from the origin: equivalent_sphere, "Orientation"). Degenerate cases:
+// the polygon must be planar; for non-planar input the sign test is meaningless.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -29,7 +23,17 @@ LTC_NAMESPACE_BEGIN
 namespace clipless {
 
 /// The sphere that stands in for a polygon: f = sin^2(sigma) = |F| and cos(omega) = u.z with u
-/// the unit direction of F, flipped for a back-facing polygon (file comment, "Orientation").
+/// the unit direction of F, flipped for a back-facing polygon.
+///
+/// Orientation. The sphere forgets which side of the polygon faces the shading point (Hill
+/// 2016 tests the light's plane equation in the shader). Here the polygon is oriented by the
+/// sign of p0 . sum_i p_i x p_i+1 (Newell's normal: positive when the vertices turn clockwise
+/// as seen from the origin, the convention of polygon.hpp), in the space where the vertices are
+/// given, times the sign of |M^-1|. For a front-facing polygon F points towards it; for a
+/// back-facing one F is flipped before the lookup. The result is signed like every integral of
+/// the library (positive for a front face) and sidedness applies as usual: one_sided gives 0 for
+/// a back face, two_sided the same value for both faces. The polygon must be planar (true for
+/// any light and its image under M^-1); for non-planar input the sign test is meaningless.
 template <typename T>
 struct equivalent_sphere {
     T f;          // |F|, in [0, 1]

@@ -8,8 +8,8 @@
 // The model interface (what a user's own model provides, e.g. over its own ltc_table):
 //   template <class T> using coefficients = lobes::one<T> (or ltc_and_cosine, two);
 //   template <class T> static coefficients<T> fetch(T cos_theta_v, T roughness);
-// Errors of each fit against the real GGX (Monte Carlo): README, "Shading polygonal lights with
-// GGX"; the two-lobe and cosine tables halve the single LTC's.
+// Errors of each fit against the real GGX (Monte Carlo): docs/results/ggx_error.md; which to
+// choose: docs/shading.md, "Choosing a model".
 #pragma once
 
 #include <ltc/config.hpp>

@@ -1,76 +1,17 @@
 // ltc/shading/light_texture.hpp -- prefiltered textures of textured polygonal lights (paper sections
-// 5.2 and 5.3): the stack of Gaussian-filtered levels that the fetch of ltc/shading/textured_light.hpp reads.
+// 5.2 and 5.3): the stack of Gaussian-filtered levels that the fetch of
+// ltc/shading/lights/textured_quad_light.hpp reads.
 //
 //   std::vector<glm::vec3> rgb(width * height);                  // linear RGB, row-major
 //   ltc::light_texture<float> tex(width, height, rgb.data());    // prefilters every level
 //   glm::vec3 c = tex.lookup(glm::vec2(u, v), tex.lod_for_sigma(sigma));   // trilinear
 //
-// Texture coordinates. Texel (x, y) of the width x height image (row-major, y = 0 first) is
-// centred at uv = ((x + 0.5) / width, (y + 0.5) / height): v = 0 on the first row. The texture
-// covers [0, 1]^2; on a quad light its corners carry uv (0,0), (1,0), (1,1), (0,1).
-//
-// What a level holds (section 5.3). I_L of eq. (14) is the texture filtered by F = D / int_P D
-// projected to texture space. The prefilter replaces F by a texture-space Gaussian of standard
-// deviation sigma (uv units, isotropic in uv) that keeps F's two properties: it is clamped to
-// the texture (zero outside) and renormalized inside it. Level k stores, at sample points p of
-// a regular grid,
-//
-//   F_k(p) = sum_c w(p, c) L(c) / sum_c w(p, c),                                      (*)
-//   w(p, c) = exp(-(p.x - c.x)^2 / (2 s_x(p)^2) - (p.y - c.y)^2 / (2 s_y(p)^2)),
-//   s_a(p)  = sqrt(sigma_k^2 + d_a(p)^2),   d_a(p) = max(0, -p.a, p.a - 1),
-//
-// with c running over all texel centres and L(c) the texel's colour. Inside the texture d = 0
-// and w is the Gaussian of standard deviation sigma_k clamped to the texture and renormalized;
-// in the margin around it (d > 0) the radius grows with the distance d to the texture along
-// each axis, so that the filter always meets the texture with a weight comparable to its peak,
-// and F_k is smooth and lower-frequency the farther out the point is (the paper's figure 6).
-// Beyond the margin the coordinates are clamped to it (clamp-to-edge on the level's grid).
-//
-// Levels. sigma_0 = 0 (level 0 is the image itself: (*) with sigma = 0 picks the nearest texel,
-// so level 0's samples inside the texture are exactly the texels), and for k >= 1
-//
-//   sigma_k = 2^(k-1) / max(width, height)      (uv units: level 1 is one texel of the larger
-//                                                side, each level doubles)
-//
-// up to the first level with sigma_k >= 2 (filters wider than twice the texture are nearly the
-// plain average: their weights vary by less than exp(-1/8) = 12% across it). Level k samples
-// each axis of n texels at the pitch h = 1 / n_k, n_k = clamp(floor(2 / sigma_k), 1, n) cells
-// across [0, 1] (centres at (i + 0.5) / n_k): at the texel pitch while sigma_k <= 2 texels,
-// then at sigma_k / 2, so the resolution halves with each level, as in a MIP pyramid, and a
-// Gaussian is sampled at least twice per standard deviation (bilinear reconstruction error of
-// the Gaussian-blurred signal <= h^2 / 8 |f''| <= 1/32 of its amplitude). The margin adds
-// ceil(margin * n_k) cells on each side, so level k covers at least [-margin, 1 + margin]^2.
-//
-// lookup(uv, lod): bilinear within levels floor(lod) and floor(lod) + 1 (clamp-to-edge on each
-// level's grid of sample centres), linear between them: a GPU's trilinear fetch. lod is
-// continuous; lod_for_sigma(sigma) is the lod whose interpolated standard deviation is sigma:
-// sigma / sigma_1 below level 1 and 1 + log2(sigma / sigma_1) above, clamped to the stack.
-// A constant texture returns that constant exactly (weights normalized in double, lerps of
-// equal values written a + t (b - a)).
-//
-// Computation: (*) is separable. Its weight is a product of a function of x and one of y (s_x
-// depends on p.x only, s_y on p.y only), and so is its normalization: sum_c w = (sum_x w_x)
-// (sum_y w_y). So F_k = sum_y (w_y / S_y) sum_x (w_x / S_x) L(x, y): a pass along rows (for
-// each row and each output column) then one along columns, each 1D kernel normalized on its
-// own, accumulated in double (the row pass stores doubles), stored as float RGB. The kernels
-// are truncated at 7 s_a from the sample point (always keeping the nearest texel): the dropped
-// weights are below exp(-24.5) = 2.3e-11 of the peak, and their sum below 1e-10 of the kernel's
-// total, under float rounding (2^-24 = 6e-8).
-// Cost: level k costs O(n^2 (1 + sigma_k / h_k)) inside the texture, i.e. O(n^2) per level
-// (the output count falls by 4 when the kernel doubles), O(n^2 log n) for the stack; in the
-// margin the kernel width grows with d, O(n^3 margin^2) per level in the worst case (level 0).
-// Rows and columns are split over std::thread::hardware_concurrency() threads (the 1D taps and
-// the thread split: ltc/shading/detail/texture_filter.hpp). Measured by
-// examples/textured_error_report/ on 2 hardware threads: a 1024 x 1024 image, 13 levels,
-// 0.74 s at the default margin 0.125 and 3.3 s at margin 0.25 (the margin dominates).
-//
-// The constructor also builds the image's cell pyramid (cells(): means and ranges of 2^k x 2^k
-// texel blocks, about 16 bytes per texel in float) for the exact integrals of
-// ltc/shading/textured_cells.hpp.
-//
-// Storage: float RGB whatever T is. Levels 0 to 2 are at the texel pitch, then each level has a
-// quarter of the samples of the previous one: about (3 + 1/3) (1 + 2 margin)^2 width height
-// 12 bytes (65.5 MB for 1024 x 1024 at the default margin 0.125).
+// Section 5.3: I_L of eq. (14) is the texture filtered by F = D / int_P D projected to texture
+// space; level k replaces F by a texture-space Gaussian of standard deviation sigma_k, clamped to
+// the texture and renormalized inside it (light_texture). Conventions: texel (x, y) of the
+// row-major image is centred at uv = ((x + 0.5) / width, (y + 0.5) / height), v = 0 on the first
+// row; a quad light's corners carry uv (0,0), (1,0), (1,1), (0,1). Degenerate cases: the
+// constructor throws std::invalid_argument for bad input; lookups are finite for any uv and lod.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -119,8 +60,62 @@ inline C nearest_image_lookup(int width, int height, const C* rgb, T u, T v) {
     return rgb[std::size_t(y) * std::size_t(width) + std::size_t(x)];
 }
 
-/// The prefiltered texture of a textured polygonal light (file comment). T is the scalar type of
-/// the lookup's coordinates; the levels are float RGB.
+/// The prefiltered texture of a textured polygonal light. T is the scalar type of the lookup's
+/// coordinates; the levels are float RGB. The texture covers [0, 1]^2.
+///
+/// What a level holds (section 5.3). I_L of eq. (14) is the texture filtered by F = D / int_P D
+/// projected to texture space. The prefilter replaces F by a texture-space Gaussian of standard
+/// deviation sigma (uv units, isotropic in uv) that keeps F's two properties: it is clamped to
+/// the texture (zero outside) and renormalized inside it. Level k stores, at sample points p of
+/// a regular grid,
+///
+///   F_k(p) = sum_c w(p, c) L(c) / sum_c w(p, c),                                      (*)
+///   w(p, c) = exp(-(p.x - c.x)^2 / (2 s_x(p)^2) - (p.y - c.y)^2 / (2 s_y(p)^2)),
+///   s_a(p)  = sqrt(sigma_k^2 + d_a(p)^2),   d_a(p) = max(0, -p.a, p.a - 1),
+///
+/// with c running over all texel centres and L(c) the texel's colour. Inside the texture d = 0
+/// and w is the Gaussian of standard deviation sigma_k clamped to the texture and renormalized;
+/// in the margin around it (d > 0) the radius grows with the distance d to the texture along
+/// each axis, so that the filter always meets the texture with a weight comparable to its peak,
+/// and F_k is smooth and lower-frequency the farther out the point is (the paper's figure 6).
+/// Beyond the margin the coordinates are clamped to it (clamp-to-edge on the level's grid).
+///
+/// Levels. sigma_0 = 0 (level 0 is the image itself: (*) with sigma = 0 picks the nearest texel,
+/// so level 0's samples inside the texture are exactly the texels), and for k >= 1
+///
+///   sigma_k = 2^(k-1) / max(width, height)      (uv units: level 1 is one texel of the larger
+///                                                side, each level doubles)
+///
+/// up to the first level with sigma_k >= 2 (filters wider than twice the texture are nearly the
+/// plain average: their weights across it stay within a factor exp(-1/8) of their peak). Level k
+/// samples each axis of n texels at the pitch h = 1 / n_k, n_k = clamp(floor(2 / sigma_k), 1, n)
+/// cells across [0, 1] (centres at (i + 0.5) / n_k): at the texel pitch while sigma_k <= 2 texels,
+/// then at sigma_k / 2, so the resolution halves with each level, as in a MIP pyramid, and a
+/// Gaussian is sampled at least twice per standard deviation (bilinear reconstruction error of
+/// the Gaussian-blurred signal <= h^2 / 8 |f''| <= 1/32 of its amplitude). The margin adds
+/// ceil(margin * n_k) cells on each side, so level k covers at least [-margin, 1 + margin]^2.
+///
+/// Computation: (*) is separable. Its weight is a product of a function of x and one of y (s_x
+/// depends on p.x only, s_y on p.y only), and so is its normalization: sum_c w = (sum_x w_x)
+/// (sum_y w_y). So F_k = sum_y (w_y / S_y) sum_x (w_x / S_x) L(x, y): a pass along rows (for
+/// each row and each output column) then one along columns, each 1D kernel normalized on its
+/// own, accumulated in double (the row pass stores doubles), stored as float RGB. The kernels
+/// are truncated at 7 s_a from the sample point (always keeping the nearest texel): the dropped
+/// weights are below exp(-24.5) = 2.3e-11 of the peak, and their sum below 1e-10 of the kernel's
+/// total, under float rounding (2^-24 = 6e-8).
+/// Cost: level k costs O(n^2 (1 + sigma_k / h_k)) inside the texture, i.e. O(n^2) per level
+/// (the output count falls by 4 when the kernel doubles), O(n^2 log n) for the stack; in the
+/// margin the kernel width grows with d, O(n^3 margin^2) per level in the worst case (level 0),
+/// so the margin dominates. Rows and columns are split over std::thread::hardware_concurrency()
+/// threads (the 1D taps and the thread split: ltc/shading/detail/texture_filter.hpp).
+///
+/// The constructor also builds the image's cell pyramid (cells(): means and ranges of 2^k x 2^k
+/// texel blocks, about 16 bytes per texel in float) for the exact integrals of
+/// ltc/shading/textured_cells.hpp.
+///
+/// Storage: float RGB whatever T is. Levels 0 to 2 are at the texel pitch, then each level has a
+/// quarter of the samples of the previous one: about (3 + 1/3) (1 + 2 margin)^2 width height
+/// 12 bytes (65.5 MB for 1024 x 1024 at the default margin 0.125).
 template <typename T>
 class light_texture {
   public:
@@ -176,7 +171,12 @@ class light_texture {
         return T(std::min(std::max(lod, 0.0), last));
     }
 
-    /// Trilinear lookup (file comment). Finite for any input: NaN coordinates read the texture
+    /// Trilinear lookup: bilinear within levels floor(lod) and floor(lod) + 1 (clamp-to-edge on
+    /// each level's grid of sample centres), linear between them: a GPU's trilinear fetch. lod is
+    /// continuous; lod_for_sigma(sigma) is the lod whose interpolated standard deviation is sigma:
+    /// sigma / sigma_1 below level 1 and 1 + log2(sigma / sigma_1) above, clamped to the stack.
+    /// A constant texture returns that constant exactly (weights normalized in double, lerps of
+    /// equal values written a + t (b - a)). Finite for any input: NaN coordinates read the texture
     /// centre, NaN lod the last level.
     glm::vec<3, T> lookup(const vec2& uv, T lod) const {
         double l = static_cast<double>(lod);

@@ -7,20 +7,12 @@
 //   lobes::ltc_and_cosine<T>  an LTC plus the clamped cosine about the normal, whose integral is
 //                             the form factor the diffuse term needs anyway (one LTC integral)
 //   lobes::two<T>             two LTCs (two LTC integrals)
-// and each is shaded (Hill and Heitz 2016's Fresnel split for every lobe) as
+// and each is shaded (Hill and Heitz 2016's Fresnel split for every lobe; shade_lobes) as
 //
 //   specular = sum over lobes  L (F0 magnitude + (1 - F0) fresnel) I_lobe
 //   diffuse  = L albedo E                                     (Lambert: E = int cos / pi)
 //
-// with I_lobe the lobe's integral over the light (eq. 3 through the LTC's M^-1) and E the
-// clamped cosine's (eq. 11), both with the light's facing applied, and L the light's radiance.
-//
-// The light interface. A light type (ltc/shading/lights/) provides, in the shading frame at P:
-//   integrals<Policy>(frame, P, m_inv, options)  -> {form_factor, ltc}: E and the LTC integral
-//   ltc_integral<Policy>(frame, P, m_inv, options) -> the LTC integral alone (a further lobe)
-//   emitted(scale, integral)                      -> the radiance that scale x integral stands for
-// (constant lights: radiance * scale * integral; textured ones integrate the colour themselves).
-// Policy is the edge_policy of the polygon integrals (ltc/core/edge_policy.hpp).
+// I_lobe: the lobe's integral (eq. 3 through M^-1), E the cosine's (eq. 11), facing applied.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -61,6 +53,17 @@ struct shading_point {
     glm::vec<3, T> albedo{T(0)};
 };
 
+/// The shading of a lobe set (one overload per set): the specular and diffuse terms of the file's
+/// first comment, with I_lobe the lobe's integral over the light (eq. 3 through the LTC's M^-1)
+/// and E the clamped cosine's (eq. 11), both with the light's facing applied, and L the light's
+/// radiance.
+///
+/// The light interface. A light type (ltc/shading/lights/) provides, in the shading frame at P:
+///   integrals<Policy>(frame, P, m_inv, options)  -> {form_factor, ltc}: E and the LTC integral
+///   ltc_integral<Policy>(frame, P, m_inv, options) -> the LTC integral alone (a further lobe)
+///   emitted(scale, integral)                      -> the radiance that scale x integral stands for
+/// (constant lights: radiance * scale * integral; textured ones integrate the colour themselves).
+/// Policy is the edge_policy of the polygon integrals (ltc/core/edge_policy.hpp).
 template <typename Policy, typename T, typename Light>
 LTC_HOST_DEVICE inline shading_result<T> shade_lobes(const shading_point<T>& p, const lobes::one<T>& c, const Light& light,
                                      const shade_options& o) {

@@ -1,58 +1,15 @@
 // ltc/shading/polygon_light_integrals.hpp -- the two signed integrals behind the shading of a
 // polygonal light (paper section 5.1): the form factor E of the polygon (eq. 11) and the
 // integral I_ltc of the LTC distribution over it (eq. 3), with one of four horizon-clipping
-// strategies; ltc/shading/polygon_light.hpp turns them into radiance.
+// strategies (horizon_clipping); ltc/shading/polygon_light.hpp turns them into radiance.
 //
 //   ltc::polygon_light_integrals<float> I = ltc::integrate_polygon_light(
 //       ltc::make_shading_frame(N, V), m_inv, P, vertices, n, ltc::horizon_clipping::ltc_space);
 //
-// Horizon clipping (horizon_clipping):
-//   ltc_space (default)  the paper's order: rotate, apply M^-1, clip to z >= 0 in the LTC's
-//                        own space. Exact integral of the LTC distribution D over the polygon.
-//                        D is not zero below the shading horizon (M does not map the upper
-//                        hemisphere into itself), so the part of a light below the surface
-//                        still receives some of the lobe: "leaks" from below.
-//   shading_first        clip the polygon to the shading horizon once, in the (T1, T2, N)
-//                        frame, before M^-1; the clipped polygon feeds both the diffuse
-//                        integral (no second clip needed) and the specular one, which then
-//                        applies M^-1 and clips again in LTC space (D_o is a clamped cosine:
-//                        without that clip the integral is not D's). Exact integral of D over
-//                        the part of the polygon above the surface; nothing leaks from below.
-//   sphere_analytic,     Hill's clipless approximation (ltc/shading/clipless.hpp) for both terms: no
-//   sphere_table         polygon clipping at all; the analytic or tabulated sphere form factor.
-// Which is better where, measured by examples/ggx_error_report/ (shipped 64 x 64 GGX table
-// against the Monte Carlo ground truth, 720 configurations, 195 of them with a significant
-// light straddling the horizon):
-//   - lights entirely above the horizon: ltc_space and shading_first are identical (the first
-//     clip does nothing); so are all lights at normal incidence (M^-1 then maps the upper
-//     hemisphere onto itself).
-//   - lights straddling the horizon: the fit underestimates them on average (mean signed
-//     error -4.4% with ltc_space); removing the leak lowers the integral further (-5.3%), yet
-//     shading_first has the smaller mean absolute error (7.35% against 7.59%): at theta_v = 30
-//     deg it is clearly better (mean |error| 1.7% against 2.7%, bias -0.5% against +1.0%), at
-//     60 and 80 deg the two are within 0.1%, and configuration by configuration it is the
-//     closer one in 85 of 195. The leak itself is small: a light entirely below the horizon
-//     (elevation -10 deg) receives at most 7e-4 of the directional albedo from ltc_space.
-//   So: ltc_space is the default (the paper's order, the exact integral of the fitted
-//   distribution, and the cheapest); shading_first is the better choice where lights often
-//   cross the horizon at moderate view angles, where the diffuse term is computed anyway (one
-//   clip for both), or where no light from below the surface is acceptable. Skipping the second
-//   clip of shading_first (one clip only, integrating the unclamped cosine over M^-1 P) would
-//   change results by up to 0.8% of the ground truth in the same grid: it is kept.
-//   - sphere_analytic / sphere_table: exact for compact lights well above the horizon, but the
-//     sphere stands in for M^-1 P, which a sharp lobe stretches into a large, elongated polygon:
-//     on the straddling configurations the sphere differs from exact clipping by 6.2% on average
-//     (95th percentile 22%, max 110%; worst at roughness 0.25), and its mean error against the
-//     ground truth is 10.7% against 9.4% for ltc_space (relative errors over the 555
-//     configurations whose ground truth is at least 1e-3 of the albedo). The table adds at
-//     most 2.3e-3 |F|.
-// (Figures for the table shipped when this was written; the example prints the current ones.)
-//
-// Cost and memory: no allocation for any n. ltc_space streams the vertices through the
-// library's clipped integrals (vertices transformed on the fly). shading_first streams them
-// through two Sutherland-Hodgman stages in sequence, each holding only its first and previous
-// vertex (a clip stage needs nothing else: every emitted vertex is consumed at once by the
-// next stage, and the closing edges are processed last), so it also runs in O(1) memory.
+// Conventions: world-space vertices seen from P in the shading frame, m_inv the LTC's inverse
+// matrix in that frame (any scale, any sign of determinant); the results signed like every
+// polygon integral of the library. Degenerate cases: an invalid frame or n < 3 gives 0. No
+// allocation for any n (horizon_clipping: how each strategy streams the vertices).
 #pragma once
 
 #include <ltc/core/detail/polygon_stages.hpp>  // edge_sum, clip_stage, transform_stage, tee_stage
@@ -72,7 +29,37 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// Where the polygon is clipped to the horizon (file comment).
+/// Where the polygon is clipped to the horizon:
+///   ltc_space (default)  the paper's order: rotate, apply M^-1, clip to z >= 0 in the LTC's
+///                        own space. Exact integral of the LTC distribution D over the polygon.
+///                        D is not zero below the shading horizon (M does not map the upper
+///                        hemisphere into itself), so the part of a light below the surface
+///                        still receives some of the lobe: "leaks" from below.
+///   shading_first        clip the polygon to the shading horizon once, in the (T1, T2, N)
+///                        frame, before M^-1; the clipped polygon feeds both the diffuse
+///                        integral (no second clip needed) and the specular one, which then
+///                        applies M^-1 and clips again in LTC space (D_o is a clamped cosine:
+///                        without that clip the integral is not D's). Exact integral of D over
+///                        the part of the polygon above the surface; nothing leaks from below.
+///   sphere_analytic,     Hill's clipless approximation (ltc/shading/clipless.hpp) for both terms: no
+///   sphere_table         polygon clipping at all; the analytic or tabulated sphere form factor.
+/// Lights entirely above the horizon: ltc_space and shading_first are identical (the first clip
+/// does nothing); so are all lights at normal incidence (M^-1 then maps the upper hemisphere onto
+/// itself). ltc_space is the default (the paper's order, the exact integral of the fitted
+/// distribution, and the cheapest); shading_first is the better choice where lights often cross
+/// the horizon at moderate view angles, where the diffuse term is computed anyway (one clip for
+/// both), or where no light from below the surface is acceptable. sphere_analytic and
+/// sphere_table are exact for compact lights well above the horizon, but the sphere stands in for
+/// M^-1 P, which a sharp lobe stretches into a large, elongated polygon; the table adds at most
+/// 2.3e-3 |F| (ltc/shading/sphere_table.hpp). Their errors against the ground truth:
+/// docs/results/ (examples/ggx_error_report); the comparison made when they were written:
+/// docs/design_notes.md.
+///
+/// Cost and memory: no allocation for any n. ltc_space streams the vertices through the
+/// library's clipped integrals (vertices transformed on the fly). shading_first streams them
+/// through two Sutherland-Hodgman stages in sequence, each holding only its first and previous
+/// vertex (a clip stage needs nothing else: every emitted vertex is consumed at once by the
+/// next stage, and the closing edges are processed last), so it also runs in O(1) memory.
 enum class horizon_clipping { ltc_space, shading_first, sphere_analytic, sphere_table };
 
 /// The two integrals behind a result, signed like every polygon integral of the library:

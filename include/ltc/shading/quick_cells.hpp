@@ -1,33 +1,15 @@
-// ltc/shading/quick_cells.hpp -- textured_method::quick_cells (ltc/shading/textured_light.hpp):
+// ltc/shading/quick_cells.hpp -- textured_method::quick_cells (ltc/shading/lights/textured_quad_light.hpp):
 // the real-time improvement on the paper's fetch, at a fixed cost of at most two calls of the
 // float batch kernel.
 //
 //   ltc::cells_result<float> r = ltc::integrate_quick_cells(d, quad, tex, ltc::sidedness::two_sided);
 //   // r.value ~ int_quad L(w) D(w) dw (RGB); r.cells leaves, r.integrals polygon integrals
 //
-// The light's texture as constant cells (ltc/shading/cell_pyramid.hpp): the cells of the level
-// two below the last (at most 4 x 4) with I_D of each exact (eq. 11, one kernel call); then the
-// cell of largest bound range I_D (ltc/shading/textured_cells.hpp) is split into its children,
-// and either the cell of second largest bound or the split cell's child of largest range too
-// (a second call of up to 8 cells): at most 22 leaves and 24 polygon integrals. Each call's
-// latency, not its width, sets the cost (cell_integrals in ltc/shading/detail/cell_quadtree.hpp), so
-// the number of calls is fixed, where the adaptive quadtree of textured_cells.hpp needs one per
-// level below its first.
-//
-// Each leaf contributes I_D(leaf) times a radiance: its texels' mean, or the paper's fetch
-// (section 5.4) at the foot point clamped into the leaf, in the (at most) two leaves of largest
-// I_D that hold at least 1/64 of the light's and are wider than about 4 sigma of the lobe (2^k
-// texels against sigma = 2^(lod - 1) texels), once some leaf holds a quarter of I_D (a lobe
-// that none does is wider than the leaves: the means serve, and the fetch's parameters, which
-// cost as much as the fetch, are skipped). The lobe is sharper than those leaves, so the mean
-// would weight their texels wrongly, most of all in a leaf that takes only the lobe's tail next
-// to its border: in the render example's stained glass, a 64 x 64-texel leaf holding 3.7% of I_D
-// next to the leaf holding the lobe put one pixel 10x too bright when only leaves with a quarter
-// of I_D took the fetch. The README's textured table measures it against Monte Carlo and its
-// cost against the fetch (bench_textured).
-//
-// Robustness: as integrate_textured_cells (corners near the largest finite value scaled by 2^-4;
-// a non-finite corner gives I_D of the quad times the texture's mean; 0 below the horizon).
+// int L D ~= sum over at most 22 leaves of I_D(leaf) (eq. 11, exact) times the leaf's texel mean,
+// or the paper's fetch (section 5.4) clamped into the leaf in the (at most) two leaves of largest
+// I_D that are wider than the lobe. Conventions: the texture mapping of textured_quad_light.hpp.
+// Degenerate cases: as integrate_textured_cells (corners near the largest finite value scaled by
+// 2^-4; a non-finite corner gives I_D of the quad times the texture's mean; 0 below the horizon).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -48,8 +30,29 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// The quick_cells integral of D times the texture over the quad (file comment). Two-sided by
-/// default, like transformed::integrate.
+/// The quick_cells integral of D times the texture over the quad. Two-sided by default, like
+/// transformed::integrate.
+///
+/// The light's texture as constant cells (ltc/shading/cell_pyramid.hpp): the cells of the level
+/// two below the last (at most 4 x 4) with I_D of each exact (eq. 11, one kernel call); then the
+/// cell of largest bound range I_D (ltc/shading/textured_cells.hpp) is split into its children,
+/// and either the cell of second largest bound or the split cell's child of largest range too
+/// (a second call of up to 8 cells): at most 22 leaves and 24 polygon integrals. Each call's
+/// latency, not its width, sets the cost (cell_integrals in ltc/shading/detail/cell_quadtree.hpp), so
+/// the number of calls is fixed, where the adaptive quadtree of textured_cells.hpp needs one per
+/// level below its first.
+///
+/// Each leaf contributes I_D(leaf) times a radiance: its texels' mean, or the paper's fetch
+/// (section 5.4) at the foot point clamped into the leaf, in the (at most) two leaves of largest
+/// I_D that hold at least 1/64 of the light's and are wider than about 4 sigma of the lobe (2^k
+/// texels against sigma = 2^(lod - 1) texels), once some leaf holds a quarter of I_D (a lobe
+/// that none does is wider than the leaves: the means serve, and the fetch's parameters, which
+/// cost as much as the fetch, are skipped). The lobe is sharper than those leaves, so the mean
+/// would weight their texels wrongly, most of all in a leaf that takes only the lobe's tail next
+/// to its border (docs/design_notes.md: why the fetch is not kept to the leaves that hold a
+/// quarter of I_D). Its error against Monte Carlo and its cost against the fetch:
+/// docs/design_notes.md, "Textured polygonal lights" (examples/textured_error_report,
+/// benchmarks/bench_textured.cpp).
 template <typename T>
 inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
                                              const light_texture<T>& tex, sidedness side = sidedness::two_sided,

@@ -5,13 +5,9 @@
 //   ltc::shading_result<float> r = ltc::shade(s, quad);          // ltc::ggx::ltc_and_cosine
 //   r = ltc::shade<ltc::ggx::two_lobes>(s, quad, {ltc::horizon_clipping::shading_first});
 //
-// shade<Model>(s, light, options) builds the frame of the tables at s.position (N = +z, V in the
-// xz-plane: make_shading_frame), reads the model's lobes at (cos theta_v, roughness) and shades
-// them against the light (ltc/shading/lobes.hpp: the equations). Lights: polygon_light, disk_light,
-// sphere_light, line_light, tube_light (ltc/shading/lights/) and textured_quad_light
-// (ltc/shading/textured_light.hpp). Models: ltc::ggx::one_lobe, ltc_and_cosine (the default),
-// two_lobes (ltc/shading/ggx_models.hpp), or a user's own (the model interface there).
-//
+// shade<Model>(s, light, options) reads the model's lobes at (cos theta_v, roughness) in the frame
+// of the tables and shades them against the light (ltc/shading/lobes.hpp: the equations, paper
+// eq. 3 and 11). Conventions: world space; the lights and models of shade's comment.
 // Bad input, the same for every light and model: a zero or non-finite normal or view vector
 // gives 0 (specular and diffuse); the roughness is clamped to [0, 1], NaN read as 0 (the table's
 // domain); lights check their own construction (ltc/shading/lights/light_error.hpp).
@@ -32,7 +28,13 @@ LTC_HOST_DEVICE inline shading_point<T> make_shading_point(const surface<T>& s) 
     return {make_shading_frame(s.normal, s.view), s.position, s.f0, s.albedo};
 }
 
-/// Radiance reflected towards s.view from `light`, with the lobes of Model (file comment).
+/// Radiance reflected towards s.view from `light`, with the lobes of Model. shade<Model>(s,
+/// light, options) builds the frame of the tables at s.position (N = +z, V in the xz-plane:
+/// make_shading_frame), reads the model's lobes at (cos theta_v, roughness) and shades them
+/// against the light (ltc/shading/lobes.hpp: the equations). Lights: polygon_light, disk_light,
+/// sphere_light, line_light, tube_light and textured_quad_light (ltc/shading/lights/). Models:
+/// ltc::ggx::one_lobe, ltc_and_cosine (the default), two_lobes (ltc/shading/ggx_models.hpp), or a
+/// user's own (the model interface there). Bad input: the file's first comment.
 /// Policy: the edge terms of the polygon integrals (ltc/core/edge_policy.hpp).
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
 inline shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {

@@ -1,110 +1,18 @@
 // ltc/shading/shade_shadowed.hpp -- a polygonal light with shadows: the analytic LTC shading of
 // ltc::shade (ltc/shading/shade.hpp) times a stochastic visibility ratio, the ratio estimator of
 // Heitz, Hill and McGuire ("Combining Analytic Direct Illumination and Stochastic Shadows",
-// I3D 2018, eq. 4):
+// I3D 2018, eq. 4), over K directions w_k towards the light, V the renderer's visibility:
 //
 //   shadowed ~= unshadowed_LTC * (sum_k f(w_k) V(w_k) / p(w_k)) / (sum_k f(w_k) / p(w_k))
 //
-// over K directions w_k towards the light, V the visibility given by the renderer.
-//
-//   ltc::surface<float> s{P, N, V, roughness, F0, albedo};
 //   auto quad = ltc::polygon_light<float>::one_sided(vertices, 4, emission_normal, radiance);
-//   auto r = ltc::shade_shadowed(s, quad,                       // ltc::ggx::ltc_and_cosine
-//                                [&](glm::vec3 o, glm::vec3 d, float t) { return !scene.occluded(o, d, t); },
-//                                ltc::shadow_sampling<float>{16, per_pixel_shift});
+//   auto r = ltc::shade_shadowed(surface, quad, [&](glm::vec3 o, glm::vec3 d, float t) { return !scene.occluded(o, d, t); },
+//                                ltc::shadow_sampling<float>{16, per_pixel_shift});  // ggx::ltc_and_cosine
 //   glm::vec3 colour = r.ratio.specular + r.ratio.diffuse;
 //
-// The analytic part. shade_shadowed<Model>(s, light, ...) shades the model's lobe set
-// (ltc/shading/lobes.hpp) as ltc::shade<Model>(s, light) does, with the same bits: `unshadowed`
-// is that result (horizon clipping ltc_space, the paper's order). The model decides the lobes and
-// with them where the LTC technique below samples:
-//   lobes::one             (ggx::one_lobe) the samples follow the LTC, for the whole specular term;
-//   lobes::ltc_and_cosine  (ggx::ltc_and_cosine, the default) they follow the LTC for its part of
-//                          the specular term only; the cosine's part joins the diffuse share
-//                          (K_d), whose technique covers the broad part that the LTC, fitted next
-//                          to the cosine, leaves out;
-//   lobes::two             (ggx::two_lobes) they follow the first lobe (the estimator only needs
-//                          a density), for the whole specular term, which the second lobe's
-//                          integral brings closer to GGX.
-//
-// Samples (shadow_sampler), K in all (on average, with rejection), one visibility query each (none
-// for a sample below the surface, where both integrands vanish), every sample serving both terms:
-//   ltc_polygon  the specular share from the LTC restricted to the polygon, density D / I_D:
-//                where the light holds at least options.rejection_from of the lobe, by
-//                rejection: N = K_s / I_D draws of the whole LTC (Algorithm 1: no sampler to
-//                build), those that hit the light kept (K_s on average, no query for the
-//                others); elsewhere by the exact sampler (ltc/core/ltc_polygon_sampling.hpp).
-//                The diffuse share from options.diffuse: light_area (the default: uniform on the
-//                light) or cosine (the clamped cosine restricted to the polygon, exact, density
-//                cos / E: ltc/core/projected_solid_angle_sampling.hpp; dearer per sample, for
-//                constant diffuse weights where area samples' vary most: lights close to or
-//                grazing the surface). K_s and K_d are in proportion to the LTC technique's and
-//                the rest's shares of the analytic result (above), and every sample is weighted
-//                by the balance heuristic over the whole plan (multi-sample MIS, Veach 1997
-//                eq. 9.13: f / (K_s D / I_D + K_d p_d), or f / (N D + K_d p_d) with rejection;
-//                the normalizers in closed form). Where the light is unoccluded the ratio is
-//                exactly 1 (the analytic result, without noise); where the LTC takes all the
-//                samples, f / p varies only by the GGX/LTC mismatch, so the ratio is close to
-//                the visible fraction of the samples.
-//   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
-//                density |x - P|^2 / (A |cos theta_x|), for both terms: the common renderer
-//                baseline.
-// f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/brdf/ggx.hpp,
-// alpha = roughness^2, the roughness clamped to [0, 1] as the tables read it) for the specular
-// term, cos / pi for the diffuse one; the ratio corrects the analytic result for visibility only
-// (a model fitted to another BRDF keeps GGX here). The directions are a rank-1 lattice,
-// (k + 1/2) / n and k / phi (the golden ratio) modulo 1, n the sampler's own count, shifted by
-// options.rotation (Cranley-Patterson rotation: pass a random shift per pixel to turn the
-// structured error into noise). Where a renderer filters the estimates over neighbouring pixels,
-// the shifts can instead be stratified across pixels: options.rotation =
-// ltc::screen_point(x, y, image_seed) with options.stratified_rotation, which shifts each
-// technique's lattice of n points by rotation.x / n, one period of its first coordinate, so that
-// the n 4^k first coordinates of an aligned 2^k x 2^k block of pixels with the same n fall one
-// per interval of width 1 / (n 4^k) (a shift by rotation.x itself stratifies nothing but the
-// points' common offset; a shift by rotation.x / K, K the total count, would cover only part of
-// the periods of a technique whose n is not a multiple of K, and bias its sums). Each sum keeps
-// its expectation over a uniform rotation (the n intervals of width 1 / n that the first
-// coordinates sweep tile [0, 1)); the ratio, a nonlinear function of them, is not distributed
-// exactly as with random shifts (README, "Shadows": the two compared).
-//
-// Outputs: `unshadowed` (= ltc::shade<Model>(s, light)), `ratio` (the estimator above: biased,
-// consistent, exact when nothing occludes the light), `unbiased` (plain Monte Carlo of the true
-// BRDF, Schlick's Fresnel included, with the same samples and visibility:
-// sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise instead of the LTC's
-// fitting error), and per term the ratio's two sums (`specular_estimates`, `diffuse_estimates`),
-// for renderers that denoise the shadows as Heitz et al. do: filter each of the two over
-// neighbouring pixels, then ltc::ratio_shading, so that the filter blurs the visibility only,
-// never the analytic shading. Each term's estimates also carry the analytic part's value of what
-// `total` estimates (the sum over the model's lobes of magnitude times integral; the form factor
-// for the diffuse term), and `specular_fresnel_estimates` the same for f (1 - V.H)^5, Schlick's
-// (1 - F0) part (the lobes' Fresnel channels): with them, ltc::corrected_specular corrects the
-// LTC's fitting error as well as the shadows (the filtered estimate of the shadowed integral
-// relative to the analytic one, per part of Hill's Fresnel split). K = 0 gives the analytic
-// result.
-//
-// Zero results, no queries: where the analytic part is 0, a light that faces away from P
-// (one-sided: its integrals vanish, up to the rounding of ltc::shade's where it barely rises above
-// the horizon) or lies below the horizon; bad input, as ltc::shade: a position, normal or view
-// vector not finite, a zero normal or view; a polygon of fewer than 3 or more than 8 vertices (the
-// samplers' fixed storage: no allocation).
-//
-// The light: a polygon_light (ltc/shading/lights/polygon_light.hpp), a convex planar polygon of at
-// most 8 vertices, one-sided or two-sided; the samplers walk its vertices in the light's own
-// order (polygon_light::vertex), so a one-sided light gives the same bits whichever order its
-// caller's vertices come in. The other light shapes of ltc::shade have no shadowed form: their
-// samplers are the polygon's.
-//
-// Visibility callback: bool visible(origin, unit direction, distance), all world space, the
-// distance measured to the light's plane along the direction; offset origin and distance by the
-// renderer's own epsilon; its answer is converted to bool. Or, from a closest-hit query,
-// ltc::first_hit(callback), callback returning the distance t_b to the first occluder along the
-// direction (a floating-point value; `distance` or more, or +inf, where nothing occludes): the
-// sample is occluded where t_b < distance (a NaN is not; a negative t_b counts as 0), and the
-// result's `blockers` then sums t_b / (t_l - t_b) over the occluded samples, t_l = distance: the
-// estimate of a penumbra's width of percentage-closer soft shadows (penumbra_width; Fernando,
-// SIGGRAPH 2005), with which a renderer that filters the estimates can narrow its filter where
-// the penumbra is narrow. The wrapper makes the distance explicit: a callback that returns a
-// float visibility or transmittance stays a boolean one.
+// Conventions: world space; a convex polygon_light of at most 8 vertices; f the true GGX BRDF, not
+// its LTC. Degenerate cases: 0 and no queries for ltc::shade's bad input, more than 8 vertices or
+// a zero analytic part; exactly the analytic result where nothing occludes the light or K = 0.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -134,11 +42,52 @@
 
 LTC_NAMESPACE_BEGIN
 
+/// The techniques of shade_shadowed's samples: K in all (on average, with rejection), one
+/// visibility query each (none for a sample below the surface, where both integrands vanish),
+/// every sample serving both terms:
+///   ltc_polygon  the specular share from the LTC restricted to the polygon, density D / I_D:
+///                where the light holds at least options.rejection_from of the lobe, by
+///                rejection: N = K_s / I_D draws of the whole LTC (Algorithm 1: no sampler to
+///                build), those that hit the light kept (K_s on average, no query for the
+///                others); elsewhere by the exact sampler (ltc/core/ltc_polygon_sampling.hpp).
+///                The diffuse share from options.diffuse: light_area (the default: uniform on the
+///                light) or cosine (the clamped cosine restricted to the polygon, exact, density
+///                cos / E: ltc/core/projected_solid_angle_sampling.hpp; dearer per sample, for
+///                constant diffuse weights where area samples' vary most: lights close to or
+///                grazing the surface). K_s and K_d are in proportion to the LTC technique's and
+///                the rest's shares of the analytic result (shade_shadowed), and every sample is
+///                weighted by the balance heuristic over the whole plan (multi-sample MIS, Veach
+///                1997 eq. 9.13: f / (K_s D / I_D + K_d p_d), or f / (N D + K_d p_d) with
+///                rejection; the normalizers in closed form). Where the light is unoccluded the
+///                ratio is exactly 1 (the analytic result, without noise); where the LTC takes all
+///                the samples, f / p varies only by the GGX/LTC mismatch, so the ratio is close to
+///                the visible fraction of the samples.
+///   light_area   K points uniform on the light's area (ltc/core/polygon_area_sampling.hpp),
+///                density |x - P|^2 / (A |cos theta_x|), for both terms: the common renderer
+///                baseline.
+/// f is the true BRDF, not its LTC: the GGX lobe without Fresnel (ltc/brdf/ggx.hpp,
+/// alpha = roughness^2, the roughness clamped to [0, 1] as the tables read it) for the specular
+/// term, cos / pi for the diffuse one; the ratio corrects the analytic result for visibility only
+/// (a model fitted to another BRDF keeps GGX here).
 enum class shadow_sampler { ltc_polygon, light_area };
-/// The diffuse share's technique under shadow_sampler::ltc_polygon (file comment).
+/// The diffuse share's technique under shadow_sampler::ltc_polygon (shadow_sampler's comment).
 enum class diffuse_sampler { light_area, cosine };
 
-/// The sample plan of shade_shadowed (file comment); the analytic part is the model's.
+/// The sample plan of shade_shadowed (shadow_sampler's comment); the analytic part is the model's.
+/// The directions are a rank-1 lattice, (k + 1/2) / n and k / phi (the golden ratio) modulo 1, n
+/// the sampler's own count, shifted by `rotation` (Cranley-Patterson rotation: pass a random
+/// shift per pixel to turn the structured error into noise). Where a renderer filters the
+/// estimates over neighbouring pixels, the shifts can instead be stratified across pixels:
+/// rotation = ltc::screen_point(x, y, image_seed) with stratified_rotation, which shifts each
+/// technique's lattice of n points by rotation.x / n, one period of its first coordinate, so that
+/// the n 4^k first coordinates of an aligned 2^k x 2^k block of pixels with the same n fall one
+/// per interval of width 1 / (n 4^k) (a shift by rotation.x itself stratifies nothing but the
+/// points' common offset; a shift by rotation.x / K, K the total count, would cover only part of
+/// the periods of a technique whose n is not a multiple of K, and bias its sums). Each sum keeps
+/// its expectation over a uniform rotation (the n intervals of width 1 / n that the first
+/// coordinates sweep tile [0, 1)); the ratio, a nonlinear function of them, is not distributed
+/// exactly as with random shifts (docs/design_notes.md, "Shadows: sampling the LTC over a
+/// polygon", compares the two).
 template <typename T>
 struct shadow_sampling {
     std::size_t samples = 4;        ///< K: directions (visibility queries) per call
@@ -147,7 +96,7 @@ struct shadow_sampling {
     /// Each technique's lattice of n points shifted by rotation.x / n along its first coordinate,
     /// which repeats every 1 / n, instead of by rotation.x: for rotations stratified across pixels
     /// (ltc::screen_point of ltc/core/screen_order.hpp), so that a block of pixels' lattices of one
-    /// n are stratified together (file comment). Either way each sum keeps its expectation for a
+    /// n are stratified together (the struct's comment). Either way each sum keeps its expectation for a
     /// uniform rotation.
     bool stratified_rotation = false;
     shadow_sampler sampler = shadow_sampler::ltc_polygon;
@@ -174,7 +123,7 @@ struct ratio_estimates {
     T analytic{0};  ///< the analytic part's value of what `total` estimates (the LTC's; exact for the diffuse term)
 };
 
-/// The occluded samples' blockers, from a first-hit visibility callback (file comment): over
+/// The occluded samples' blockers, from a first-hit visibility callback (first_hit): over
 /// the samples whose query met an occluder at t_b < t_l (t_l the light's plane's distance along
 /// the ray), the sum of t_b / (t_l - t_b) and their number. Both are sums, so a renderer can
 /// filter them over neighbouring pixels (weighted: `occluded` need not stay an integer) before
@@ -185,7 +134,7 @@ struct blocker_estimates {
     T occluded{0};   ///< the occluded samples
 };
 
-/// A visibility callback that answers with the first occluder's distance (file comment): what
+/// A visibility callback that answers with the first occluder's distance (first_hit): what
 /// ltc::first_hit wraps. Calls the callback as it is, const or not (a mutable lambda, as an
 /// unwrapped callback may be).
 template <typename F>
@@ -203,7 +152,14 @@ struct first_hit_callback {
 
 /// Marks `callback(origin, unit direction, distance)` as returning the first occluder's distance
 /// along the ray (+inf where none) instead of a visibility: shade_shadowed then records the
-/// occluded samples' blockers (blocker_estimates).
+/// occluded samples' blockers (blocker_estimates). The callback returns the distance t_b to the
+/// first occluder along the direction (a floating-point value; `distance` or more, or +inf, where
+/// nothing occludes): the sample is occluded where t_b < distance (a NaN is not; a negative t_b
+/// counts as 0), and the result's `blockers` then sums t_b / (t_l - t_b) over the occluded
+/// samples, t_l = distance: the estimate of a penumbra's width of percentage-closer soft shadows
+/// (penumbra_width; Fernando, SIGGRAPH 2005), with which a renderer that filters the estimates
+/// can narrow its filter where the penumbra is narrow. The wrapper makes the distance explicit: a
+/// callback that returns a float visibility or transmittance stays a boolean one.
 template <typename F>
 LTC_HOST_DEVICE inline first_hit_callback<std::decay_t<F>> first_hit(F&& callback) {
     return {std::forward<F>(callback)};
@@ -227,7 +183,20 @@ LTC_HOST_DEVICE inline T penumbra_width(T light_extent, const blocker_estimates<
     return blockers.occluded > T(0) ? light_extent * (blockers.ratio_sum / blockers.occluded) : T(0);
 }
 
-/// What shade_shadowed returns (file comment).
+/// What shade_shadowed returns: `unshadowed` (= ltc::shade<Model>(s, light)), `ratio` (the
+/// estimator of Heitz et al.: biased, consistent, exact when nothing occludes the light),
+/// `unbiased` (plain Monte Carlo of the true BRDF, Schlick's Fresnel included, with the same
+/// samples and visibility: sum f V / (sum_k n_k p_k), for comparison; it carries the BRDF's noise
+/// instead of the LTC's fitting error), and per term the ratio's two sums (`specular_estimates`,
+/// `diffuse_estimates`), for renderers that denoise the shadows as Heitz et al. do: filter each of
+/// the two over neighbouring pixels, then ltc::ratio_shading, so that the filter blurs the
+/// visibility only, never the analytic shading. Each term's estimates also carry the analytic
+/// part's value of what `total` estimates (the sum over the model's lobes of magnitude times
+/// integral; the form factor for the diffuse term), and `specular_fresnel_estimates` the same for
+/// f (1 - V.H)^5, Schlick's (1 - F0) part (the lobes' Fresnel channels): with them,
+/// ltc::corrected_specular corrects the LTC's fitting error as well as the shadows (the filtered
+/// estimate of the shadowed integral relative to the analytic one, per part of Hill's Fresnel
+/// split). K = 0 gives the analytic result.
 template <typename T>
 struct shadowed_polygon_light_result {
     polygon_light_result<T> unshadowed;  ///< analytic LTC, no visibility
@@ -239,7 +208,7 @@ struct shadowed_polygon_light_result {
     /// The specular sums with f (1 - V.H)^5, Schlick's (1 - F0) part, its analytic value the
     /// lobes' Fresnel channels times their integrals (for corrected_specular).
     ratio_estimates<T> specular_fresnel_estimates;
-    /// The occluded samples' blocker distances, with a first-hit callback (file comment).
+    /// The occluded samples' blocker distances, with a first-hit callback (first_hit).
     blocker_estimates<T> blockers;
 };
 
@@ -373,7 +342,7 @@ inline T channel_sum(const glm::vec<3, T>& c) {
     return c.x + c.y + c.z;
 }
 
-// One overload per lobe set (ltc/shading/lobes.hpp; file comment: where the samples go).
+// One overload per lobe set (ltc/shading/lobes.hpp; shade_shadowed's comment: where the samples go).
 
 template <typename Policy, typename T>
 inline shadowed_analytic<T> shadowed_analytic_part(const shading_point<T>& p, const lobes::one<T>& c,
@@ -429,9 +398,40 @@ inline shadowed_analytic<T> shadowed_analytic_part(const shading_point<T>& p, co
 
 }  // namespace detail
 
-/// Shading of a constant-radiance polygonal light with visibility (file comment): ltc::shade<Model,
+/// Shading of a constant-radiance polygonal light with visibility: ltc::shade<Model,
 /// Policy>(s, light) as `unshadowed`, times the ratio estimator of Heitz et al. 2018 (eq. 4) over
-/// options.samples visibility queries of `visible`.
+/// options.samples visibility queries of `visible` (the samples: shadow_sampler, shadow_sampling;
+/// the outputs: shadowed_polygon_light_result).
+///
+/// The analytic part. shade_shadowed<Model>(s, light, ...) shades the model's lobe set
+/// (ltc/shading/lobes.hpp) as ltc::shade<Model>(s, light) does, with the same bits: `unshadowed`
+/// is that result (horizon clipping ltc_space, the paper's order). The model decides the lobes and
+/// with them where the LTC technique samples:
+///   lobes::one             (ggx::one_lobe) the samples follow the LTC, for the whole specular term;
+///   lobes::ltc_and_cosine  (ggx::ltc_and_cosine, the default) they follow the LTC for its part of
+///                          the specular term only; the cosine's part joins the diffuse share
+///                          (K_d), whose technique covers the broad part that the LTC, fitted next
+///                          to the cosine, leaves out;
+///   lobes::two             (ggx::two_lobes) they follow the first lobe (the estimator only needs
+///                          a density), for the whole specular term, which the second lobe's
+///                          integral brings closer to GGX.
+///
+/// The light: a polygon_light (ltc/shading/lights/polygon_light.hpp), a convex planar polygon of at
+/// most 8 vertices, one-sided or two-sided; the samplers walk its vertices in the light's own
+/// order (polygon_light::vertex), so a one-sided light gives the same bits whichever order its
+/// caller's vertices come in. The other light shapes of ltc::shade have no shadowed form: their
+/// samplers are the polygon's.
+///
+/// Visibility callback: bool visible(origin, unit direction, distance), all world space, the
+/// distance to the light's plane along the direction; offset origin and distance by the
+/// renderer's own epsilon; its answer is converted to bool. Or, from a closest-hit query,
+/// ltc::first_hit(callback): the first occluder's distance, and the blockers (first_hit).
+///
+/// Zero results, no queries: where the analytic part is 0, a light that faces away from P
+/// (one-sided: its integrals vanish, up to the rounding of ltc::shade's where it barely rises above
+/// the horizon) or lies below the horizon; bad input, as ltc::shade: a position, normal or view
+/// vector not finite, a zero normal or view; a polygon of fewer than 3 or more than 8 vertices (the
+/// samplers' fixed storage: no allocation).
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T,
           typename Visible>
 shadowed_polygon_light_result<T> shade_shadowed(const surface<T>& s, const polygon_light<T>& light, Visible&& visible,
@@ -462,7 +462,7 @@ shadowed_polygon_light_result<T> shade_shadowed(const surface<T>& s, const polyg
     r.ratio = r.unshadowed;
     const T weight_s = r.unshadowed.specular.x + r.unshadowed.specular.y + r.unshadowed.specular.z;
     const T weight_d = r.unshadowed.diffuse.x + r.unshadowed.diffuse.y + r.unshadowed.diffuse.z;
-    const T weight_ltc = a.ltc_share;  // the LTC technique's share (file comment)
+    const T weight_ltc = a.ltc_share;  // the LTC technique's share (shadow_sampler's comment)
     const std::size_t K = options.samples;
     if (!(weight_s + weight_d > T(0)) || K == 0) return r;
 
@@ -477,8 +477,8 @@ shadowed_polygon_light_result<T> shade_shadowed(const surface<T>& s, const polyg
     const auto d = transformed<clamped_cosine<T>>::from_inverse(a.sampled.m_inv);
     const T i_d = std::abs(I.ltc), e = pi<T>() * std::abs(I.form_factor);  // the two densities' normalizers
 
-    // The callback's answer: visible, or with ltc::first_hit the first occluder's distance (file
-    // comment), which adds its PCSS ratio to the blockers where the sample is occluded.
+    // The callback's answer: visible, or with ltc::first_hit the first occluder's distance
+    // (first_hit), which adds its PCSS ratio to the blockers where the sample is occluded.
     const auto query = [&](const vec3& world, T distance) -> bool {
         if constexpr (detail::is_first_hit<std::decay_t<Visible>>::value) {
             static_assert(std::is_floating_point_v<std::decay_t<decltype(visible(P, world, distance))>>,

@@ -1,19 +1,13 @@
 // ltc/shading/shading_frame.hpp -- the local frame of a shading point, the one in which the LTC
-// tables are fitted (paper section 4: N = +z, V in the xz-plane); polygonal and textured lights
-// (ltc/shading/polygon_light.hpp, ltc/shading/textured_light.hpp) rotate their vertices into it.
+// tables are fitted (paper section 4: N = +z, V in the xz-plane); the lights (ltc/shading/lights/)
+// rotate their vertices into it.
 //
 //   ltc::shading_frame<float> f = ltc::make_shading_frame(N, V);
 //   glm::vec3 local = f.to_local(p - P);   // p - P in (T1, T2, N); f.cos_theta_v for the table
 //
-// Frame. The LTC table is fitted in the local frame N = +z, V = (sin theta_v, 0, cos theta_v),
-// so the polygon is rotated into (T1, T2, N) with T1 = normalize(V - N (V.N)), T2 = N x T1 (a
-// right-handed rotation: orientations are preserved). V - N (V.N) is computed as N x (V x N)
-// with a cancellation-free V x N, so T1 is accurate and orthogonal to N even when V is within
-// an ulp of N. When V is exactly parallel to N the projection is the zero vector; then any T1
-// orthogonal to N is right, because at normal incidence the isotropic lobe is symmetric about
-// N, and T1 comes from the branch-free orthonormal basis of Duff et al. 2017 ("Building an
-// orthonormal basis, revisited", JCGT 6(1)). cos theta_v = clamp(N.V, 0, 1): a view from below
-// the surface (interpolated normals) is shaded as grazing.
+// Conventions: T1 = normalize(V - N (V.N)), T2 = N x T1, a right-handed rotation (orientations are
+// preserved); cos theta_v = clamp(N.V, 0, 1). Degenerate cases: V parallel to N takes any T1
+// orthogonal to N; a view from below the surface is shaded as grazing (shading_frame).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -25,7 +19,17 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// The local shading frame (T1, T2, N) and cos theta_v of a shading point (file comment).
+/// The local shading frame (T1, T2, N) and cos theta_v of a shading point.
+///
+/// Frame. The LTC table is fitted in the local frame N = +z, V = (sin theta_v, 0, cos theta_v),
+/// so the polygon is rotated into (T1, T2, N) with T1 = normalize(V - N (V.N)), T2 = N x T1 (a
+/// right-handed rotation: orientations are preserved). V - N (V.N) is computed as N x (V x N)
+/// with a cancellation-free V x N, so T1 is accurate and orthogonal to N even when V is within
+/// an ulp of N. When V is exactly parallel to N the projection is the zero vector; then any T1
+/// orthogonal to N is right, because at normal incidence the isotropic lobe is symmetric about
+/// N, and T1 comes from the branch-free orthonormal basis of Duff et al. 2017 ("Building an
+/// orthonormal basis, revisited", JCGT 6(1)). cos theta_v = clamp(N.V, 0, 1): a view from below
+/// the surface (interpolated normals) is shaded as grazing.
 template <typename T>
 struct shading_frame {
     glm::vec<3, T> t1{T(1), T(0), T(0)};

@@ -8,12 +8,9 @@
 //
 // is ltc::shade_shadowed<Model>(ltc::surface{P, N, V, roughness, F0, albedo}, light, visible,
 // options) with the light of the old sidedness rule (one-sided: the front is the side from which
-// the vertices turn clockwise, ltc/shading/lights/polygon_light.hpp) and Model by options.lobes:
-//   analytic_lobes::one          ltc::ggx::one_lobe (the default here)
-//   analytic_lobes::two          ltc::ggx::two_lobes
-//   analytic_lobes::cosine_lobe  ltc::ggx::ltc_and_cosine (ltc::shade's default)
-// The same bits as before for finite input and a roughness in [0, 1]; the bad input of ltc::shade
-// (a non-finite position, a zero view vector) now gives 0.
+// the vertices turn clockwise, ltc/shading/lights/polygon_light.hpp) and Model by options.lobes
+// (analytic_lobes). The same bits as before for finite input and a roughness in [0, 1]; the bad
+// input of ltc::shade (a non-finite position, a zero view vector) now gives 0.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -35,7 +32,10 @@ LTC_NAMESPACE_BEGIN
 
 /// Deprecated: use ltc::shade_shadowed<Model> (the model decides the lobes).
 /// The analytic part of shade_polygon_light_shadowed: ggx::one_lobe, ggx::two_lobes or
-/// ggx::ltc_and_cosine (file comment).
+/// ggx::ltc_and_cosine:
+///   analytic_lobes::one          ltc::ggx::one_lobe (the default here)
+///   analytic_lobes::two          ltc::ggx::two_lobes
+///   analytic_lobes::cosine_lobe  ltc::ggx::ltc_and_cosine (ltc::shade's default)
 enum class analytic_lobes { one, two, cosine_lobe };
 
 /// Deprecated: use ltc::shadow_sampling with ltc::shade_shadowed<Model>.
@@ -47,7 +47,7 @@ struct shadow_options : shadow_sampling<T> {
 
 /// Deprecated: use ltc::shade_shadowed<Model> (ltc/shading/shade_shadowed.hpp).
 /// The shadowed shading of the polygon vertices[0..n) with the old sidedness rule, the model by
-/// options.lobes (file comment).
+/// options.lobes (analytic_lobes; the file's first comment).
 template <typename T, typename Visible>
 shadowed_polygon_light_result<T> shade_polygon_light_shadowed(
     const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,

@@ -6,25 +6,11 @@
 //   float I = ltc::clipless::sphere_form_factor_table(f, cos_omega);  // host: the built-in table
 //   ltc::clipless::fill_sphere_table(texels);                          // the texture to upload
 //
-// The table. sphere_table stores q = I / sin^3(sigma) on 32 x 32 nodes over t = cos(omega) /
-// sin(sigma) in [-1, 1] (the band, where clipping happens; outside it I is c f or 0, computed
-// exactly) and y = 1 - cos(sigma) in [0, 1], node (i, j) at t = -1 + 2 i / 31, y = j / 31, read
-// with bilinear interpolation. At y = 0 the nodes hold the limit of a small disk cut by a chord,
-// q0(t) = (t (pi/2 + t sqrt(1 - t^2) + asin t) + 2/3 (1 - t^2)^(3/2)) / pi. Both axes were chosen
-// by measurement: a table indexed like the one of Heitz's demo code (ltc_2, over cos(omega) and
-// f), storing I / f, is off at 32 x 32 by up to 2.8e-2 f (the clipped band is narrower than a texel for small spheres, and I has a
-// square-root singularity in f at f = 1); this one by at most 2.3e-3 f (measured).
-// Error bound: q is C^1 on the closed square (smooth inside the band, joining c f and 0 with
-// a continuous slope at t = +-1), so in each cell bilinear interpolation errs by at most
-// h_t/4 osc(q_t) + h_y/4 osc(q_y), h_t = 2/31, h_y = 1/31, osc the oscillation of the partial
-// derivative over the cell (1D: the error e = f - interpolant has e' = f' - mean slope, so
-// |e| <= h osc(f') / 4; the tensor product adds the two directions). With the oscillations
-// evaluated cell by cell this bounds the error by 8.1e-3 sin^3(sigma) <= 8.1e-3 f; the
-// measured maximum is 2.3e-3 (tests/test_sphere_form_factor.cpp checks both, cell by cell). No uniform
-// bound through second derivatives exists: near t = 1, y = 1 (a hemisphere-sized sphere
-// just touching the horizon) q_tt grows like cos(sigma)^(-3/2). The table is 4 KiB of float,
-// built once on first use from the analytic formula (fill_sphere_table(), which is also what a
-// renderer uploads as a texture); nothing is generated at build time.
+// The table stores q = I / sin^3(sigma) over t = cos(omega) / sin(sigma) in [-1, 1] and
+// y = 1 - cos(sigma) in [0, 1], read bilinearly (sphere_table); outside the band I is c f or 0,
+// computed exactly. Its error is at most 8.1e-3 f (derived), 2.3e-3 f in practice
+// (tests/test_sphere_form_factor.cpp checks both). Conventions: f = sin^2(sigma), cos(omega) as
+// in ltc/shading/clipless.hpp. The table is 4 KiB of float, built once on first use.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -57,7 +43,7 @@ inline T small_sphere_limit(T t) {
 /// Resolution of sphere_table.
 constexpr std::size_t sphere_table_size = 32;
 
-/// Writes the 32 x 32 table of q(t, y) = I / sin^3(sigma) (file comment) to out, row-major with
+/// Writes the 32 x 32 table of q(t, y) = I / sin^3(sigma) (sphere_table) to out, row-major with
 /// y along rows: out[j * 32 + i] = q(-1 + 2 i / 31, j / 31). This is the texture a renderer
 /// uploads; sphere_table reads it.
 template <typename T = float>
@@ -82,11 +68,29 @@ inline void fill_sphere_table(T* out) {
 }
 
 /// The tabulated sphere form factor: a 32 x 32 table over the clipped band, read bilinearly.
+///
+/// The table. sphere_table stores q = I / sin^3(sigma) on 32 x 32 nodes over t = cos(omega) /
+/// sin(sigma) in [-1, 1] (the band, where clipping happens; outside it I is c f or 0, computed
+/// exactly) and y = 1 - cos(sigma) in [0, 1], node (i, j) at t = -1 + 2 i / 31, y = j / 31, read
+/// with bilinear interpolation. At y = 0 the nodes hold the limit of a small disk cut by a chord,
+/// q0(t) = (t (pi/2 + t sqrt(1 - t^2) + asin t) + 2/3 (1 - t^2)^(3/2)) / pi (docs/design_notes.md:
+/// why these axes rather than those of Heitz's demo code).
+/// Error bound: q is C^1 on the closed square (smooth inside the band, joining c f and 0 with
+/// a continuous slope at t = +-1), so in each cell bilinear interpolation errs by at most
+/// h_t/4 osc(q_t) + h_y/4 osc(q_y), h_t = 2/31, h_y = 1/31, osc the oscillation of the partial
+/// derivative over the cell (1D: the error e = f - interpolant has e' = f' - mean slope, so
+/// |e| <= h osc(f') / 4; the tensor product adds the two directions). With the oscillations
+/// evaluated cell by cell this bounds the error by 8.1e-3 sin^3(sigma) <= 8.1e-3 f; the error is
+/// below 2.3e-3 f everywhere (tests/test_sphere_form_factor.cpp checks both, cell by cell). No
+/// uniform bound through second derivatives exists: near t = 1, y = 1 (a hemisphere-sized sphere
+/// just touching the horizon) q_tt grows like cos(sigma)^(-3/2). The table is 4 KiB of float,
+/// built once on first use from the analytic formula (fill_sphere_table(), which is also what a
+/// renderer uploads as a texture); nothing is generated at build time.
 struct sphere_table {
     float q[sphere_table_size * sphere_table_size];
 
     /// sphere_form_factor(f, cos_omega) from the table: exact outside the band |cos(omega)| <
-    /// sin(sigma), bilinear inside (error <= 8.1e-3 f derived, 2.3e-3 f measured: file comment).
+    /// sin(sigma), bilinear inside (error <= 8.1e-3 f derived, below 2.3e-3 f tested: the struct's comment).
     template <typename T>
     LTC_HOST_DEVICE T lookup(T f, T cos_omega) const {
         constexpr std::size_t N = sphere_table_size;

@@ -5,35 +5,12 @@
 //   ltc::cells_result<float> r = ltc::integrate_textured_cells(d, quad, cells, side, {64});
 //   // r.value ~ int_quad L(w) D(w) dw, |r.value - exact| <= r.error_bound per channel
 //
-// With the texture constant on each texel (ltc/shading/cell_pyramid.hpp), the integral of L D
-// over the light is exactly sum_t L_t I_D(t) over the texels t, each I_D(t) the closed form of
-// eq. (11) over the texel's quad (transformed::integrate, horizon-clipped). A coarser cell c
-// with the mean of its texels gives mean(c) I_D(c), off by sum_t (L_t - mean) I_D(t), at most
-// range(c) I_D(c) per channel (every I_D(t) >= 0: the cells share the light's orientation).
-//
-// Refinement (a quadtree over the pyramid): start from the one cell of the last level; while the
-// budget allows, replace the leaf with the largest bound range(c) I_D(c) by its children; leaves
-// of level 0 or of range 0 are exact and never refined. Stops when the leaves would exceed
-// budget.max_cells, or when the summed bound is at most budget.tolerance times the value
-// (largest channel). The result converges to the texel-constant integral as the budget grows and
-// equals it (to rounding) once every leaf is exact: at most width x height leaves.
-//
-// Cost: the cells of the level two below the last (at most 4 x 4) are integrated first, in one
-// call of the float batch kernel (ltc/shading/batch.hpp), and the levels above take their sums
-// (I_D adds up over cells of one orientation); below that, each step refines the two leaves of
-// largest bound, integrating their up to 8 children in one call (examples/textured_error_report
-// prints the integrals per method). Double integrates cell by cell (its default policy, exact,
-// has no SIMD kernel).
-//
-// Texture mapping: as ltc/shading/textured_light.hpp and the ground truth
-// (ltc/reference/textured_ground_truth.hpp), the texture covers the parallelogram q_0 + u (q_1 -
-// q_0) + v (q_3 - q_0), uv in [0, 1]^2 (exact for rectangles and parallelograms; corner 2 is not
-// used). The cells are that parallelogram's sub-parallelograms, with the quad's orientation.
-//
-// Robustness: finite for finite input (each integral is; corners beyond a eighth of the largest
-// finite value are first scaled by 2^-4, exactly); a light entirely below the horizon or a
-// zero-area quad gives 0. A non-finite corner (an overflow upstream) gives I_D of the quad times
-// the texture's mean, as the fetch does there.
+// With the texture constant on each texel, int L D = sum_t L_t I_D(t) exactly, each I_D(t) the
+// closed form of eq. (11) over the texel's quad (transformed::integrate, horizon-clipped); a
+// coarser cell c with the mean of its texels is off by at most range(c) I_D(c) per channel.
+// Conventions: the texture mapping of ltc/shading/lights/textured_quad_light.hpp (uv on the
+// parallelogram of corners 0, 1, 3). Degenerate cases: finite for finite input; 0 for a light
+// below the horizon or a zero-area quad; a non-finite corner gives I_D times the texture's mean.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -53,7 +30,7 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// How far integrate_textured_cells refines (file comment).
+/// How far integrate_textured_cells refines (integrate_textured_cells: the refinement).
 struct cell_budget {
     std::size_t max_cells = 64;  ///< leaves of the quadtree at most (0 is taken as 1)
     double tolerance = 0;        ///< stop once the bound <= tolerance * value (0: the whole budget)
@@ -209,8 +186,38 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
     return r;
 }
 
-/// The integral of the texel-constant texture times D over the quad, adaptively (file comment).
-/// Two-sided by default, like transformed::integrate.
+/// The integral of the texel-constant texture times D over the quad, adaptively. Two-sided by
+/// default, like transformed::integrate.
+///
+/// With the texture constant on each texel (ltc/shading/cell_pyramid.hpp), the integral of L D
+/// over the light is exactly sum_t L_t I_D(t) over the texels t, each I_D(t) the closed form of
+/// eq. (11) over the texel's quad (transformed::integrate, horizon-clipped). A coarser cell c
+/// with the mean of its texels gives mean(c) I_D(c), off by sum_t (L_t - mean) I_D(t), at most
+/// range(c) I_D(c) per channel (every I_D(t) >= 0: the cells share the light's orientation).
+///
+/// Refinement (a quadtree over the pyramid): start from the one cell of the last level; while the
+/// budget allows, replace the leaf with the largest bound range(c) I_D(c) by its children; leaves
+/// of level 0 or of range 0 are exact and never refined. Stops when the leaves would exceed
+/// budget.max_cells, or when the summed bound is at most budget.tolerance times the value
+/// (largest channel). The result converges to the texel-constant integral as the budget grows and
+/// equals it (to rounding) once every leaf is exact: at most width x height leaves.
+///
+/// Cost: the cells of the level two below the last (at most 4 x 4) are integrated first, in one
+/// call of the float batch kernel (ltc/shading/batch.hpp), and the levels above take their sums
+/// (I_D adds up over cells of one orientation); below that, each step refines the two leaves of
+/// largest bound, integrating their up to 8 children in one call (examples/textured_error_report
+/// prints the integrals per method). Double integrates cell by cell (its default policy, exact,
+/// has no SIMD kernel).
+///
+/// Texture mapping: as ltc/shading/lights/textured_quad_light.hpp and the ground truth
+/// (ltc/reference/textured_ground_truth.hpp), the texture covers the parallelogram q_0 + u (q_1 -
+/// q_0) + v (q_3 - q_0), uv in [0, 1]^2 (exact for rectangles and parallelograms; corner 2 is not
+/// used). The cells are that parallelogram's sub-parallelograms, with the quad's orientation.
+///
+/// Robustness: finite for finite input (each integral is; corners beyond a eighth of the largest
+/// finite value are first scaled by 2^-4, exactly); a light entirely below the horizon or a
+/// zero-area quad gives 0. A non-finite corner (an overflow upstream) gives I_D of the quad times
+/// the texture's mean, as the fetch does there.
 template <typename T>
 inline cells_result<T> integrate_textured_cells(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
                                                 const cell_pyramid<T>& cells, sidedness side = sidedness::two_sided,

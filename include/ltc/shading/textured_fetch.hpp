@@ -1,6 +1,6 @@
 // ltc/shading/textured_fetch.hpp -- the texture coordinates and filter width of the paper's
-// fetch for textured quad lights (section 5.4, eq. 15): fetch_parameters; the file comment of
-// ltc/shading/textured_light.hpp derives them and lists their robustness.
+// fetch for textured quad lights (section 5.4, eq. 15): fetch_parameters, which derives them and
+// lists their degenerate cases; ltc/shading/lights/textured_quad_light.hpp uses them.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -13,7 +13,7 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// The parameters of the prefiltered fetch (file comment).
+/// The parameters of the prefiltered fetch (fetch_parameters).
 template <typename T>
 struct textured_fetch {
     glm::vec<2, T> uv{T(0.5), T(0.5)};          ///< texture coordinates of the foot point
@@ -25,6 +25,36 @@ struct textured_fetch {
 /// Section 5.4: texture coordinates and filter width of the fetch for the quad quad[0..3]
 /// (corners with uv (0,0), (1,0), (1,1), (0,1)), seen from the origin through the LTC whose
 /// inverse matrix is m_inv (any scale; the identity for the clamped cosine itself).
+///
+/// Eq. 15. In the cosine configuration (the quad's corners mapped by M^-1, where D becomes the
+/// clamped cosine D_o around +z and the shading point stays at the origin), the shading point is
+/// projected orthogonally onto the plane of the quad:
+///
+///   q_i = M^-1 p_i,  n = (q_2 - q_0) x (q_3 - q_1)  (twice the vector area),  A = |n| / 2,
+///   r = n^ . (q_0 + q_1 + q_2 + q_3) / 4   (signed distance of the plane; |r| is used),
+///   f = r n^  (the foot of the perpendicular from the origin),
+///   (u, v): f = q_0 + u (q_1 - q_0) + v (q_3 - q_0)  (least squares in the plane),
+///   sigma = sqrt(r^2 / (2 A))   (texture-space standard deviation, uv units),
+///   lod = tex.lod_for_sigma(sigma).
+///
+/// (u, v) and sigma are invariant to the scale of M^-1 and of the quad (r^2 / A is scale-free),
+/// so the quad is first divided by its largest coordinate (no overflow of M^-1 p for huge
+/// input). A linear map keeps planes planar and parallelograms parallelograms, and maps the
+/// affine texture parameterization q_0 + u e_1 + v e_3 onto the world one, so (u, v) is the
+/// texture coordinate of the world-space point whose image is f. Texture mapping: the quad is
+/// taken as the parallelogram spanned from corner 0 by corners 1 and 3 (exact for rectangles
+/// and parallelograms; corner 2 only enters the area vector), the same mapping as the ground
+/// truth of ltc/reference/textured_ground_truth.hpp.
+///
+/// Robustness (never NaN or Inf for finite input):
+///   - plane behind the shading point, or light below the horizon: |r| is used.
+///   - grazing (shading point in or near the light plane): r -> 0, sigma -> 0, the sharpest
+///     level at the foot point, which is where the light is (I_D -> 0 there too).
+///   - a foot point far outside the texture: uv outside [0, 1]; the lookup clamps it to the
+///     margin of the prefiltered levels (light_texture.hpp), where the filter is wide and smooth.
+///   - degenerate quad (zero area, coincident corners) or non-finite intermediate values:
+///     `valid` is false, uv = (0.5, 0.5) and sigma = +inf (the last, widest level: about the
+///     texture's average).
 template <typename T>
 inline textured_fetch<T> fetch_parameters(const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T> quad[4]) {
     using vec3 = glm::vec<3, double>;

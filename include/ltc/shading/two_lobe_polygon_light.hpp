@@ -9,8 +9,8 @@
 //
 // Same inputs, conventions, horizon clipping and degenerate cases as shade_polygon_light, at
 // the cost of one more LTC integral (integrate_polygon_light_ltc: the second lobe's transform,
-// clip and edge sum, without a second form factor): README, "Shading polygonal lights with GGX",
-// measured by benchmarks/bench_shading.cpp.
+// clip and edge sum, without a second form factor; its cost: docs/results/speed.md, from
+// benchmarks/bench_shading.cpp).
 #pragma once
 
 #include <ltc/config.hpp>

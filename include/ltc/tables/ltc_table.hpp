@@ -6,34 +6,12 @@
 //   float e = c.magnitude * ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(c.m_inv)
 //                               .integrate(polygon, n);
 //
-// A table holds, for each node (t, a) of a width x height grid, the 6 floats
-//
-//   channel 0..3: m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2]   (GLM m[column][row])
-//   channel 4:    magnitude = integral of rho(V, L) cos(theta_L) dL      (directional albedo)
-//   channel 5:    fresnel   = integral of rho(V, L) cos(theta_L) (1 - V.H)^5 dL
-//
-// where m_inv is the inverse LTC matrix in the local frame N = +z, V = (sin theta_v, 0,
-// cos theta_v), divided by its middle element m_inv[1][1] (which is therefore 1 and not stored);
-// the four other structurally zero elements m_inv[0][1], m_inv[1][0], m_inv[1][2], m_inv[2][1]
-// are 0 for an isotropic BRDF. In the paper's row-major notation, m_inv = [c0 0 c2; 0 1 0; c1 0 c3]
-// with c_k the channels. The data are stored node after node, rows of constant roughness one
-// after the other: data[((a * width) + t) * 6 + channel]. The batch kernels gather the floats
-// with 32-bit lane indices: a table used in batches keeps width * height * 6 below 2^31, at most
-// about 357 million nodes (the shipped tables have 1024 or 4096).
-//
-// Parameterization (the one of the paper's code release, which samples grazing angles densely):
-//   u = sqrt(1 - cos theta_v)   node t at u = t / (width - 1),  i.e. cos theta_v = 1 - u^2;
-//   v = roughness               node a at v = a / (height - 1), alpha = max(roughness^2, alpha_min).
-//
-// Lookup: bilinear interpolation between the four surrounding nodes with clamp-to-edge, which is
-// what a GPU texture fetch of a width x height texture computes at the texel coordinates
-// (u * (width - 1) + 0.5) / width, (v * (height - 1) + 0.5) / height (the "LUT_SCALE / LUT_BIAS"
-// of the paper's shaders), except that the weights are exact instead of 8-bit fixed point.
-// Inputs are clamped to [0, 1] and NaN counts as 0, so any input gives finite coefficients.
-// Coordinates within rounding error of a node return that node's values exactly.
-//
 // Shading with a specular colour F0 and Schlick's Fresnel (Hill 2016):
 //   integral over P of rho cos F ~= (F0 * magnitude + (1 - F0) * fresnel) * I_ltc(P).
+//
+// Conventions: 6 floats per node (namespace channel), nodes at u = sqrt(1 - cos theta_v) and
+// v = roughness (ltc_table), m_inv in the local frame N = +z, V in the xz-plane. Degenerate cases:
+// inputs are clamped to [0, 1] and NaN counts as 0, so any input gives finite coefficients.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -63,7 +41,21 @@ LTC_HOST_DEVICE inline glm::vec<3, T> brdf_scale(const glm::vec<3, T>& F0, const
     return F0 * c.magnitude + (glm::vec<3, T>(T(1)) - F0) * c.fresnel;
 }
 
-/// Channel indices of a table node (see the file comment).
+/// Channel indices of a table node. A table holds, for each node (t, a) of a width x height grid,
+/// the 6 floats
+///
+///   channel 0..3: m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2]   (GLM m[column][row])
+///   channel 4:    magnitude = integral of rho(V, L) cos(theta_L) dL      (directional albedo)
+///   channel 5:    fresnel   = integral of rho(V, L) cos(theta_L) (1 - V.H)^5 dL
+///
+/// where m_inv is the inverse LTC matrix in the local frame N = +z, V = (sin theta_v, 0,
+/// cos theta_v), divided by its middle element m_inv[1][1] (which is therefore 1 and not stored);
+/// the four other structurally zero elements m_inv[0][1], m_inv[1][0], m_inv[1][2], m_inv[2][1]
+/// are 0 for an isotropic BRDF. In the paper's row-major notation, m_inv = [c0 0 c2; 0 1 0; c1 0 c3]
+/// with c_k the channels. The data are stored node after node, rows of constant roughness one
+/// after the other: data[((a * width) + t) * 6 + channel]. The batch kernels gather the floats
+/// with 32-bit lane indices: a table used in batches keeps width * height * 6 below 2^31, at most
+/// about 357 million nodes (the shipped tables have 1024 or 4096).
 namespace channel {
 inline constexpr int m_inv_00 = 0;  ///< m_inv[0][0]
 inline constexpr int m_inv_02 = 1;  ///< m_inv[0][2]: column 0, row 2 (the paper's bottom-left element)
@@ -101,8 +93,19 @@ LTC_HOST_DEVICE inline void axis_position(T s, int n, T tolerance, int& i0, T& f
 
 }  // namespace detail
 
-/// A non-owning view of a width x height LTC table (6 floats per node, layout in the file
-/// comment), with the bilinear lookup of a GPU texture fetch.
+/// A non-owning view of a width x height LTC table (6 floats per node, layout: namespace
+/// channel), with the bilinear lookup of a GPU texture fetch.
+///
+/// Parameterization (the one of the paper's code release, which samples grazing angles densely):
+///   u = sqrt(1 - cos theta_v)   node t at u = t / (width - 1),  i.e. cos theta_v = 1 - u^2;
+///   v = roughness               node a at v = a / (height - 1), alpha = max(roughness^2, alpha_min).
+///
+/// Lookup: bilinear interpolation between the four surrounding nodes with clamp-to-edge, which is
+/// what a GPU texture fetch of a width x height texture computes at the texel coordinates
+/// (u * (width - 1) + 0.5) / width, (v * (height - 1) + 0.5) / height (the "LUT_SCALE / LUT_BIAS"
+/// of the paper's shaders), except that the weights are exact instead of 8-bit fixed point.
+/// Inputs are clamped to [0, 1] and NaN counts as 0, so any input gives finite coefficients.
+/// Coordinates within rounding error of a node return that node's values exactly.
 class ltc_table {
   public:
     static constexpr int channels = channel::count;

@@ -6,17 +6,12 @@
 //   auto disk = ltc::disk_light<float>::one_sided(centre, normal, radius, radiance);
 //   ltc::shading_result<float> r = ltc::shade(surface, disk);   // ltc/shading/shade.hpp
 //
-// World space: the disk's centre, normal (any length) and radius, and its radiance. One-sided
-// disks emit towards +normal, two-sided ones from both faces. Radius <= 0 or NaN, or a zero
-// normal, is a disk that emits nothing.
-//
 //   diffuse  = albedo * radiance * E,   E = int_disk cos / pi        (integrate_disk, M = I)
 //   specular = radiance * (F0 magnitude + (1 - F0) fresnel) * I_ltc  (integrate_disk, the GGX LTC)
 //
-// Both integrals are exact to rounding (the horizon clipped exactly); the shading's error is the
-// GGX fit's (examples/shape_error_report measures it against Monte Carlo of the real GGX).
-// Degenerate input gives finite results: radius <= 0, the point in the disk's plane (edge-on)
-// give 0; see ltc/core/ellipse_integral.hpp.
+// Conventions: world space; one-sided disks emit towards +normal, two-sided ones from both faces.
+// Degenerate cases: finite results; radius <= 0 or NaN, a zero normal, or the point in the disk's
+// plane (edge-on) give 0 (ltc/core/ellipse_integral.hpp).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -33,7 +28,13 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// A constant-radiance disk light (file comment).
+/// A constant-radiance disk light. World space: the disk's centre, normal (any length) and
+/// radius, and its radiance. One-sided disks emit towards +normal, two-sided ones from both
+/// faces. Radius <= 0 or NaN, or a zero normal, is a disk that emits nothing. Both integrals are
+/// exact to rounding (the horizon clipped exactly); the shading's error is the GGX fit's
+/// (examples/shape_error_report, docs/results/shape_error.md: against Monte Carlo of the real
+/// GGX). Degenerate input gives finite results: radius <= 0, the point in the disk's plane
+/// (edge-on) give 0; see ltc/core/ellipse_integral.hpp.
 template <typename T>
 class disk_light {
 public:

@@ -1,18 +1,15 @@
-// ltc/shading/lights/line_light.hpp -- a constant-radiance thin tube (line) light: Heitz and Hill 2017's line lights, the LTC integral of a thin cylinder around the segment
-// p0-p1 (ltc/core/line_integral.hpp) times its diameter.
+// ltc/shading/lights/line_light.hpp -- a constant-radiance thin tube (line) light: Heitz and Hill
+// 2017's line lights, the LTC integral of a thin cylinder around the segment p0-p1
+// (ltc/core/line_integral.hpp) times its diameter.
 //
 //   ltc::line_light<float> line{p0, p1, radius, radiance};
 //   ltc::shading_result<float> r = ltc::shade(surface, line);   // ltc/shading/shade.hpp
 //
-// World space: the tube's axis p0-p1, its radius and radiance; an aggregate. A tube glows all around: no sidedness; no end caps.
-//
 //   diffuse  = albedo * radiance * 2 r I_line,cos                   (integrate_line_cosine)
 //   specular = radiance * (F0 magnitude + (1 - F0) fresnel) * 2 r I_line   (integrate_line)
 //
-// I_line is exact in the limit of a thin tube (r small against the distance to the point: the
-// cylinder's solid angle is 2r d/|x|^3 dl + O(r^2) per axis element); a point close to the tube
-// (distance ~ r) sees it wider than that, an error examples/shape_error_report measures against
-// Monte Carlo of the real cylinder, with the GGX fit's. Degenerate input gives finite results:
+// Conventions: world space, an aggregate; a tube glows all around (no sidedness), no end caps.
+// I_line is exact in the limit of a thin tube (line_light). Degenerate cases: finite results;
 // radius <= 0 or NaN, p0 = p1, an axis through the shading point give 0.
 #pragma once
 
@@ -31,7 +28,14 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// A constant-radiance thin tube light (file comment).
+/// A constant-radiance thin tube light. World space: the tube's axis p0-p1, its radius and
+/// radiance; an aggregate. A tube glows all around: no sidedness; no end caps. I_line is exact in
+/// the limit of a thin tube (r small against the distance to the point: the cylinder's solid
+/// angle is 2r d/|x|^3 dl + O(r^2) per axis element); a point close to the tube (distance ~ r)
+/// sees it wider than that, an error examples/shape_error_report (docs/results/shape_error.md)
+/// compares with Monte Carlo of the real cylinder, with the GGX fit's. For close or wide tubes:
+/// ltc/shading/lights/tube_light.hpp. Degenerate input gives finite results: radius <= 0 or NaN,
+/// p0 = p1, an axis through the shading point give 0.
 template <typename T>
 struct line_light {
     using vec3 = glm::vec<3, T>;

@@ -6,27 +6,10 @@
 //   auto b = ltc::polygon_light<float>::one_sided(quad, 4, ltc::winding::counter_clockwise_front, radiance);
 //   auto c = ltc::polygon_light<float>::two_sided(quad, 4, radiance);
 //
-// Facing. A one-sided light emits towards the side its emission normal points to, whatever the
-// order of its vertices: the light walks them in the order that makes that side the front (the
-// side from which they turn clockwise, the orientation of the library's signed integrals,
-// ltc/core/polygon.hpp), so both orders of one polygon give the same bits. For vertices that
-// already carry a convention, `winding` names the two in use:
-//   counter_clockwise_front  the front is the side from which the vertices turn counter-clockwise
-//                            (the right-hand normal (p1 - p0) x (p2 - p0) points towards it):
-//                            three.js's LTC_Evaluate ("ccw winding order of light vertices"),
-//                            OpenGL's default front face;
-//   clockwise_front          the front is the side from which they turn clockwise: the paper's
-//                            ltc_quad.fs and the library's old shade_*(..., sidedness::one_sided).
-// A two-sided light emits from both faces (|signed integral|).
-//
-// Storage. The light refers to the caller's vertices (a pointer and a count, like std::span): no
-// copy and no allocation for any n, so they must outlive every call of shade with the light.
-// Build the light where its vertices live (not from a temporary array).
-//
-// Checked construction (ltc::invalid_light, ltc/shading/lights/light_error.hpp): vertices null
-// with n > 0; an emission normal that is zero, not finite, or perpendicular to the polygon's
-// vector area (which side?). A polygon of n < 3 vertices, or of zero area, is a valid light that
-// emits nothing.
+// Conventions: world space; a one-sided light emits towards its emission normal whatever the order
+// of its vertices (polygon_light, "Facing"), a two-sided one from both faces (|signed integral|).
+// The light refers to the caller's vertices, which must outlive its use. Degenerate cases: bad
+// input throws ltc::invalid_light; n < 3 or zero area is a valid light that emits nothing.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -43,7 +26,13 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// The two winding conventions of one-sided polygons (file comment).
+/// The two winding conventions of one-sided polygons, for vertices that already carry one:
+///   counter_clockwise_front  the front is the side from which the vertices turn counter-clockwise
+///                            (the right-hand normal (p1 - p0) x (p2 - p0) points towards it):
+///                            three.js's LTC_Evaluate ("ccw winding order of light vertices"),
+///                            OpenGL's default front face;
+///   clockwise_front          the front is the side from which they turn clockwise: the paper's
+///                            ltc_quad.fs and the library's old shade_*(..., sidedness::one_sided).
 enum class winding { counter_clockwise_front, clockwise_front };
 
 namespace detail {
@@ -62,7 +51,23 @@ class polygon_light_access;
 
 }  // namespace detail
 
-/// A constant-radiance planar polygon light (file comment).
+/// A constant-radiance planar polygon light.
+///
+/// Facing. A one-sided light emits towards the side its emission normal points to, whatever the
+/// order of its vertices: the light walks them in the order that makes that side the front (the
+/// side from which they turn clockwise, the orientation of the library's signed integrals,
+/// ltc/core/polygon.hpp), so both orders of one polygon give the same bits. For vertices that
+/// already carry a convention, `winding` names the two in use. A two-sided light emits from both
+/// faces (|signed integral|).
+///
+/// Storage. The light refers to the caller's vertices (a pointer and a count, like std::span): no
+/// copy and no allocation for any n, so they must outlive every call of shade with the light.
+/// Build the light where its vertices live (not from a temporary array).
+///
+/// Checked construction (ltc::invalid_light, ltc/shading/lights/light_error.hpp): vertices null
+/// with n > 0; an emission normal that is zero, not finite, or perpendicular to the polygon's
+/// vector area (which side?). A polygon of n < 3 vertices, or of zero area, is a valid light that
+/// emits nothing.
 template <typename T>
 class polygon_light {
 public:
@@ -82,7 +87,7 @@ public:
         return polygon_light(vertices, n, radiance, sidedness::one_sided, facing > T(0));
     }
 
-    /// Emits from the face the convention names (file comment).
+    /// Emits from the face the convention names (winding).
     static polygon_light one_sided(const vec3* vertices, std::size_t n, winding front, const vec3& radiance) {
         check_vertices(vertices, n);
         return polygon_light(vertices, n, radiance, sidedness::one_sided, front == winding::counter_clockwise_front);

@@ -1,22 +1,18 @@
-// ltc/shading/lights/sphere_light.hpp -- a constant-radiance sphere light, integrated exactly: a sphere of radius R whose centre is at distance d > R covers the same directions as
-// the disk facing the point through its circle of tangency (the base of the cone it subtends):
+// ltc/shading/lights/sphere_light.hpp -- a constant-radiance sphere light, integrated exactly: a
+// sphere of radius R whose centre is at distance d > R covers the same directions as the disk
+// facing the point through its circle of tangency (the base of the cone it subtends):
 //
 //   centre' = P + (C - P) (1 - R^2/d^2),  normal' = (P - C)/d,  radius' = R sqrt(1 - R^2/d^2),
 //
 // so its LTC integral is the disk's (ltc/shading/lights/disk_light.hpp, exact to rounding), not an
-// approximation: the method Blender EEVEE and the 2017 course (Heitz and Hill) use for spheres,
-// with the exact disk integral. Uniform radiance, so only the directions matter.
+// approximation: the method Blender EEVEE and the 2017 course (Heitz and Hill) use for spheres.
 //
 //   ltc::sphere_light<float> sphere{centre, radius, radiance};
 //   ltc::shading_result<float> r = ltc::shade(surface, sphere);   // ltc/shading/shade.hpp
 //
-// World space; an aggregate (no invariant to check). The sphere
-// glows all around: no sidedness. A shading point inside the sphere or on it (d <= R) sees it in
-// every direction: the whole LTC, I = 1 (D integrates to 1), and E = 1; radius <= 0 or
-// non-finite input gives 0. 1 - R^2/d^2 is computed
-// as (d - R)(d + R)/d^2 (no cancellation for a point close to the sphere). The shading's error is
-// the GGX fit's (examples/shape_error_report, including spheres straddling the horizon and
-// points close to the sphere).
+// Conventions: world space, an aggregate; the sphere glows all around: no sidedness. Degenerate
+// cases: P inside or on the sphere (d <= R) sees the whole LTC, I = 1 and E = 1; radius <= 0 or
+// non-finite input gives 0.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -35,7 +31,7 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// What a sphere (centre, radius) is from P (file comment): `disk`, the disk that covers the
+/// What a sphere (centre, radius) is from P (view_sphere): `disk`, the disk that covers the
 /// same directions; `inside` (d <= R: every direction); or `nothing` (radius <= 0 or NaN,
 /// non-finite input).
 template <typename T>
@@ -45,6 +41,9 @@ struct sphere_view {
     T radius{0};
 };
 
+/// The sphere seen from P: its disk of tangency, with 1 - R^2/d^2 computed as (d - R)(d + R)/d^2
+/// (no cancellation for a point close to the sphere). Uniform radiance, so only the directions
+/// matter.
 template <typename T>
 inline sphere_view<T> view_sphere(const glm::vec<3, T>& P, const glm::vec<3, T>& centre, T radius) {
     sphere_view<T> s;
@@ -67,7 +66,13 @@ inline sphere_view<T> view_sphere(const glm::vec<3, T>& P, const glm::vec<3, T>&
     return s;
 }
 
-/// A constant-radiance sphere light (file comment).
+/// A constant-radiance sphere light: the disk of view_sphere, integrated exactly (with the exact
+/// disk integral). World space; an aggregate (no invariant to check). The sphere glows all
+/// around: no sidedness. A shading point inside the sphere or on it (d <= R) sees it in every
+/// direction: the whole LTC, I = 1 (D integrates to 1), and E = 1; radius <= 0 or non-finite
+/// input gives 0. The shading's error is the GGX fit's (examples/shape_error_report,
+/// docs/results/shape_error.md, including spheres straddling the horizon and points close to the
+/// sphere).
 template <typename T>
 struct sphere_light {
     using vec3 = glm::vec<3, T>;

@@ -1,87 +1,17 @@
-// ltc/shading/lights/textured_quad_light.hpp -- textured quad lights (paper sections 5.2 and 5.4): the
-// radiance of the light is a 2D colour texture, prefiltered by ltc/shading/light_texture.hpp.
+// ltc/shading/lights/textured_quad_light.hpp -- textured quad lights (paper sections 5.2-5.4): the
+// light's radiance is a 2D colour texture, prefiltered by ltc/shading/light_texture.hpp.
 //
 //   ltc::light_texture<float> tex(width, height, rgb);               // once per texture
 //   glm::vec3 I = ltc::integrate_textured_quad(d, quad, tex);        // ~ int_quad L(w) D(w) dw
 //   auto light = ltc::textured_quad_light<float>::one_sided(quad_world, emission_normal, tex);
 //   ltc::shading_result<float> r = ltc::shade(surface, light);        // ltc/shading/shade.hpp
-//   // or, with the exact integral of the texel-constant texture over 64 adaptive cells:
-//   light = ltc::textured_quad_light<float>::one_sided(quad_world, emission_normal, tex,
-//                                                      ltc::textured_policy{ltc::textured_method::exact_cells, {64}});
 //
-// Methods (textured_policy): `fetch`, the paper's I_D I_L below; `exact_cells`, the integral of
-// the texel-constant texture over adaptive cells, each cell's I_D exact and its radiance the
-// mean of its texels (ltc/shading/textured_cells.hpp, with an error bound and a budget);
-// `quick_cells`, the real-time improvement on the fetch (ltc/shading/quick_cells.hpp): 16 exact
-// cells and up to 8 of their children in two kernel calls, each leaf its mean, or the paper's
-// fetch at the foot point clamped into it in the (at most) two leaves of largest I_D that are
-// wider than the lobe (the README's textured table measures all three against Monte Carlo and
-// against each other's cost).
-//
-// Eq. (12)-(14). With L(w) the texture seen through the quad, the integral of L D splits into
-//
-//   I   = int_P L(w) D(w) dw  ~=  I_D I_L                                              (12)
-//   I_D = int_P D(w) dw                   exact: eq. (3), transformed::integrate        (13)
-//   I_L = int_P L D dw / int_P D dw       the average colour seen through D             (14)
-//
-// and I_L is approximated by one trilinear fetch into the prefiltered texture (section 5.3).
-// Only I_L is approximate: with a constant texture L = c, the fetch returns c exactly and
-// I_D I_L = c I_D is the untextured result (tests/test_textured.cpp checks this bit for bit).
-//
-// The fetch (section 5.4, eq. 15). In the cosine configuration (the quad's corners mapped by
-// M^-1, where D becomes the clamped cosine D_o around +z and the shading point stays at the
-// origin), the shading point is projected orthogonally onto the plane of the quad:
-//
-//   q_i = M^-1 p_i,  n = (q_2 - q_0) x (q_3 - q_1)  (twice the vector area),  A = |n| / 2,
-//   r = n^ . (q_0 + q_1 + q_2 + q_3) / 4   (signed distance of the plane; |r| is used),
-//   f = r n^  (the foot of the perpendicular from the origin),
-//   (u, v): f = q_0 + u (q_1 - q_0) + v (q_3 - q_0)  (least squares in the plane),
-//   sigma = sqrt(r^2 / (2 A))   (texture-space standard deviation, uv units),
-//   lod = tex.lod_for_sigma(sigma).
-//
-// (u, v) and sigma are invariant to the scale of M^-1 and of the quad (r^2 / A is scale-free),
-// so the quad is first divided by its largest coordinate (no overflow of M^-1 p for huge
-// input). A linear map keeps planes planar and parallelograms parallelograms, and maps the
-// affine texture parameterization q_0 + u e_1 + v e_3 onto the world one, so (u, v) is the
-// texture coordinate of the world-space point whose image is f. Texture mapping: the quad is
-// taken as the parallelogram spanned from corner 0 by corners 1 and 3 (exact for rectangles
-// and parallelograms; corner 2 only enters the area vector), the same mapping as the ground
-// truth of ltc/reference/textured_ground_truth.hpp.
-//
-// Robustness (never NaN or Inf for finite input):
-//   - plane behind the shading point, or light below the horizon: |r| is used; I_D is 0 for a
-//     light entirely below the horizon (then the result is 0 and nothing is fetched).
-//   - grazing (shading point in or near the light plane): r -> 0, sigma -> 0, the sharpest
-//     level at the foot point, which is where the light is (I_D -> 0 there too).
-//   - a foot point far outside the texture: uv outside [0, 1]; the lookup clamps it to the
-//     margin of the prefiltered levels (light_texture.hpp), where the filter is wide and smooth.
-//   - degenerate quad (zero area, coincident corners) or non-finite intermediate values:
-//     fetch_parameters().valid is false, uv = (0.5, 0.5) and sigma = +inf (the last, widest
-//     level: about the texture's average); I_D is finite (0 for a zero-area quad).
-//
-// Known limits of the approximation. The Gaussian stands in for F = D / I_D projected to the
-// texture, which is neither Gaussian nor isotropic; the anisotropy of the texture mapping
-// (sigma is isotropic in uv, so non-square quads are filtered isotropically in uv, not in
-// space) and the variation of the cosine over the polygon are ignored (section 5.4), and the
-// fetch point is the foot of the perpendicular, not where the lobe's energy lands. Measured by
-// examples/textured_error_report/ (|I_D I_L - MC| / MC of int L D with MC of the texel-constant
-// texture, 177 configurations: diffuse and GGX roughness 0.1-1, theta_v 0-80 deg, distance
-// 0.5-4, facing / tilted / vertical 1 x 1 lights; 64 x 64 textures; MC standard error 0.3-0.9%),
-// mean / p95 / max:
-//   - smooth gradient 2.6% / 8.0% / 14%, smooth blobs 11% / 52% / 67% (worst for sharp lobes:
-//     a sharp lobe fetched a few texels off the right place on a steep slope);
-//   - 4-texel checker 3.2% / 24% / 43%;
-//   - a small bright detail (17% of the energy in 0.2% of the area): 28% / 84% / 329%. This is
-//     where it fails: a sharp lobe whose highlight falls on the detail (or next to it) is
-//     fetched at the foot point with a filter of the wrong width and shape, so the detail is
-//     missed (errors near -90%: the result is the background) or smeared over the wrong place
-//     (+150% to +330% at distance 0.5, roughness 0.25-0.5, theta_v 60-80 deg). The bias is
-//     -9.5% on average. The paper presents I_L as an approximation for this reason.
-// The cell methods: quick_cells 0.34% / 1.0% / 2.8%, 2.1% / 6.3% / 18%, 1.5% / 3.6% / 31% and
-// 2.4% / 6.7% / 9.6% on the same four; exact_cells (64 cells) at most 0.75% mean and 3.0% max on
-// every texture (the README's table).
-// Shading errors (magnitude I_D I_L against MC of int L rho cos) add the GGX fit's own error
-// (mean 3.5-11% by roughness, up to 88% at roughness 0.1 and grazing view in this grid).
+// Eq. (12)-(14): int_P L D dw ~= I_D I_L, I_D = int_P D dw exact (eq. 3), I_L = int_P L D dw / I_D
+// by one trilinear fetch into the prefiltered texture (sections 5.3-5.4), or by exact cells
+// (textured_method). Conventions: the corners carry uv (0,0), (1,0), (1,1), (0,1), the texture
+// mapped on the parallelogram spanned from corner 0 by corners 1 and 3. Degenerate cases: never
+// NaN or Inf for finite input; 0 for a light below the horizon or a quad of zero area; a constant
+// texture c gives c I_D exactly, the untextured result.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -105,9 +35,34 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// I_D I_L (eq. 12-14) for the LTC d and the textured quad (file comment): the RGB
-/// approximation of int_quad L(w) D(w) dw. Two-sided by default (like transformed::integrate);
-/// one_sided gives 0 when the quad's vertices turn counter-clockwise as seen from the origin.
+/// I_D I_L (eq. 12-14) for the LTC d and the textured quad: the RGB approximation of
+/// int_quad L(w) D(w) dw. Two-sided by default (like transformed::integrate); one_sided gives 0
+/// when the quad's vertices turn counter-clockwise as seen from the origin. With L(w) the texture
+/// seen through the quad, the integral of L D splits into
+///
+///   I   = int_P L(w) D(w) dw  ~=  I_D I_L                                              (12)
+///   I_D = int_P D(w) dw                   exact: eq. (3), transformed::integrate        (13)
+///   I_L = int_P L D dw / int_P D dw       the average colour seen through D             (14)
+///
+/// and I_L is approximated by one trilinear fetch into the prefiltered texture (section 5.3), at
+/// the texture coordinates and filter width of fetch_parameters (ltc/shading/textured_fetch.hpp:
+/// section 5.4, eq. 15, and its degenerate cases). Only I_L is approximate: with a constant
+/// texture L = c, the fetch returns c exactly and I_D I_L = c I_D is the untextured result
+/// (tests/test_textured.cpp checks this bit for bit). I_D is 0 for a light entirely below the
+/// horizon (then the result is 0 and nothing is fetched) and finite for a degenerate quad (0 for
+/// a zero-area one).
+///
+/// Known limits of the approximation. The Gaussian stands in for F = D / I_D projected to the
+/// texture, which is neither Gaussian nor isotropic; the anisotropy of the texture mapping
+/// (sigma is isotropic in uv, so non-square quads are filtered isotropically in uv, not in
+/// space) and the variation of the cosine over the polygon are ignored (section 5.4), and the
+/// fetch point is the foot of the perpendicular, not where the lobe's energy lands. It fails for
+/// a sharp lobe whose highlight falls on a small bright detail (or next to it): fetched at the
+/// foot point with a filter of the wrong width and shape, the detail is missed (the result is the
+/// background) or smeared over the wrong place. The paper presents I_L as an approximation for
+/// this reason; the cell methods (textured_method) integrate the texel-constant texture instead.
+/// The methods' errors against Monte Carlo: examples/textured_error_report, and docs/design_notes.md
+/// ("Textured polygonal lights").
 template <typename T>
 inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],
                                               const light_texture<T>& tex, sidedness side = sidedness::two_sided) {
@@ -118,10 +73,21 @@ inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T
 }
 
 /// How the textured integral int_quad L D is computed (the policy of integrate_textured_quad
-/// and shade_textured_quad_light).
+/// and shade_textured_quad_light): `fetch`, the paper's I_D I_L (integrate_textured_quad);
+/// `exact_cells`, the integral of the texel-constant texture over adaptive cells, each cell's I_D
+/// exact and its radiance the mean of its texels (ltc/shading/textured_cells.hpp, with an error
+/// bound and a budget); `quick_cells`, the real-time improvement on the fetch
+/// (ltc/shading/quick_cells.hpp): 16 exact cells and up to 8 of their children in two kernel
+/// calls, each leaf its mean, or the paper's fetch at the foot point clamped into it in the (at
+/// most) two leaves of largest I_D that are wider than the lobe (docs/textured.md compares the
+/// three; docs/design_notes.md, "Textured polygonal lights", against Monte Carlo and in cost).
+/// For example, the exact integral over 64 adaptive cells:
+///
+///   light = ltc::textured_quad_light<float>::one_sided(quad_world, emission_normal, tex,
+///                                                      ltc::textured_policy{ltc::textured_method::exact_cells, {64}});
 enum class textured_method {
     fetch,        ///< I_D I_L with one prefiltered fetch (sections 5.3-5.4; the default)
-    quick_cells,  ///< integrate_quick_cells: 16 to 22 cells, a fetch in the wide ones (README)
+    quick_cells,  ///< integrate_quick_cells: 16 to 22 cells, a fetch in the wide ones (docs/textured.md)
     exact_cells,  ///< integrate_textured_cells with textured_policy::budget
 };
 
@@ -158,7 +124,7 @@ struct textured_light_integrals {
     glm::vec<3, T> ltc{T(0)};
 };
 
-/// A textured quad light (file comment) as ltc::shade takes it (ltc/shading/shade.hpp):
+/// A textured quad light (integrate_textured_quad) as ltc::shade takes it (ltc/shading/shade.hpp):
 ///
 ///   auto light = ltc::textured_quad_light<float>::one_sided(quad, emission_normal, tex);
 ///   ltc::shading_result<float> r = ltc::shade<ltc::ggx::one_lobe>(surface, light);
