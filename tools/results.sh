@@ -14,7 +14,7 @@ build=${1:-$root/build-results}
 out=$root/docs/results
 jobs=$(nproc)
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DLTC_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" -j"$jobs" --target ggx_error_report shape_error_report bench_batch bench_shading
+cmake --build "$build" -j"$jobs" --target ggx_error_report shape_error_report textured_error_report bench_batch bench_shading
 mkdir -p "$out"
 commit=$(git -C "$root" rev-parse --short HEAD)
 dirty=$(git -C "$root" status --porcelain --untracked-files=no -- include examples benchmarks | head -c1)
@@ -31,6 +31,8 @@ report ggx_error.md "GGX shading against Monte Carlo ground truth (one-lobe tabl
   "$build/examples/ggx_error_report" --fit-sizes 0 --objectives none
 report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo ground truth" \
   "$build/examples/shape_error_report"
+report textured_error.md "Textured lights against Monte Carlo ground truth" \
+  "$build/examples/textured_error_report"
 echo "results: benchmarks" >&2
 python3 "$root/benchmarks/speed_tables.py" --build "$build" --out "$build/speed" \
   --image "$build/speed/speed.png" >"$build/speed/tables.md"
