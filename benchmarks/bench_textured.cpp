@@ -11,7 +11,7 @@
 // and the whole shading call ltc::shade_textured_quad_light (frame, GGX table fetch, specular and
 // diffuse textured integrals) by each method, in float (BM_shade).
 //
-// Configurations: the grid of the textured error report (examples/textured_error_report): the
+// Configurations: the grid of the textured error report (tools/textured_error_report): the
 // shading point at the origin, N = +z, V = (sin theta_v, 0, cos theta_v); lobes diffuse (M = I)
 // and GGX at roughness 0.1, 0.25, 0.5, 1 (ltc::ggx::fetch's M^-1); theta_v = 0, 30, 60, 80 degrees;
 // a 1 x 1 light centred at distance 0.5, 1.5, 4 along elevation 45 deg on the mirror side, facing

@@ -1,5 +1,5 @@
 // The light placements and textures of bench_textured.cpp: the grid of the textured error
-// report (examples/textured_error_report/), see bench_textured.cpp's file comment.
+// report (tools/textured_error_report/), see bench_textured.cpp's file comment.
 #pragma once
 
 #include <ltc/core/clamped_cosine.hpp>

@@ -8,7 +8,7 @@
 // clamped cosine) is sampled exactly (transformed::sample) and a sample counts when its ray hits
 // the light, so the hit fraction p_i estimates int_light D_i (eq. 3) without bias and with binomial
 // variance p_i (1 - p_i) / n. The fit's error against the real GGX is measured elsewhere
-// (test_shading_ggx.cpp, examples/ggx_error_report).
+// (test_shading_ggx.cpp, tools/ggx_error_report).
 #include <catch2/catch.hpp>
 
 #include <ltc/ltc.hpp>
@@ -265,7 +265,7 @@ void check_every_light(const char* model) {
     check_light<Model, T>(sphere, [&](auto x) { return sphere.template light<decltype(x)>(); }, m + ": sphere", 37);
     // The tube is integrated as its ribbon, the quad that covers the same directions across the
     // axis but not quite at the open ends (ltc/shading/lights/tube_light.hpp: a sliver O(r / L),
-    // measured by examples/shape_error_report): the reference is the ribbon seen from each point.
+    // measured by tools/shape_error_report): the reference is the ribbon seen from each point.
     const tube_desc tube{{-1.0, 1.0, 0.8}, {1.0, 1.2, 0.2}, 0.15};
     for (std::size_t k = 0; k < std::size(scenes); ++k) {
         const scene& sc = scenes[k];

@@ -70,7 +70,7 @@ TEST_CASE("LTC shading against the Monte Carlo GGX ground truth on a small grid"
     // Ground truth: ltc::ground_truth::integrate with ltc::brdf::ggx<double>, MIS, 2^17
     // iterations, fixed seeds (standard errors 0.2-0.5%). Specular with F0 = 1 (magnitude *
     // I_ltc), like the ground truth (no Fresnel). The bounds are the measured errors of the
-    // shipped tables (examples/ggx_error_report/ has the full grid), rounded up.
+    // shipped tables (tools/ggx_error_report/ has the full grid), rounded up.
     struct light_case {
         const char* name;
         std::vector<dvec3> v;

@@ -1,6 +1,6 @@
 // World-space sphere, disk and tube lights (ltc/shading/sphere_light.hpp, disk_light.hpp, line_light.hpp):
 // (a) diffuse against exact form factors, to rounding; (b) the sphere as the disk that faces the point;
-// (c) degenerate input; (d) GGX against Monte Carlo, within examples/shape_error_report's measurements.
+// (c) degenerate input; (d) GGX against Monte Carlo, within tools/shape_error_report's measurements.
 // Tolerances of (a) (u: the unit roundoff of the type), from the documented accuracy of the pieces:
 //   - disk, sphere: test_ellipse_integral.cpp's bound for an ellipse, 16 u (S + E + sens), S its angular
 //     diameter, sens the sensitivity to moving each input vector by u times its length; plus 8 u sens
@@ -217,7 +217,7 @@ TEMPLATE_TEST_CASE("shape lights: degenerate input gives finite results", "[shap
 }
 
 TEST_CASE("shape lights: GGX against Monte Carlo within shape_error_report's measured errors", "[shape_lights]") {
-    // Configurations of examples/shape_error_report's grid (grid.hpp, restated), each with the report's
+    // Configurations of tools/shape_error_report's grid (grid.hpp, restated), each with the report's
     // figures (--list, 2^16 iterations): the LTC's signed error against MC of the real shape and that
     // MC's relative standard error; tubes: also against 2 r x MC of the thin line (the fit alone) and
     // that MC's; one sphere: the 2017 approximation's error. Bound: |error| <= |reported| + 0.005% (the

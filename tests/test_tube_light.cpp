@@ -2,7 +2,7 @@
 // floor against the infinite cylinder's exact form factor, (b) P inside the tube (or beyond an end,
 // within its radius) against the openings' disk form factors, (c) the ribbon is shade_polygon_light_one_lobe
 // of the quad, bit for bit, (d) degenerate and huge input, (e) GGX against Monte Carlo of the real
-// cylinder within examples/shape_error_report's measurements.
+// cylinder within tools/shape_error_report's measurements.
 #include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
@@ -154,7 +154,7 @@ TEMPLATE_TEST_CASE("tube light: degenerate and huge input gives finite results",
 }
 
 TEST_CASE("tube light: GGX against Monte Carlo within shape_error_report's measured errors", "[tube_light]") {
-    // Tubes of examples/shape_error_report's grid (grid.hpp, restated), with the report's figures
+    // Tubes of tools/shape_error_report's grid (grid.hpp, restated), with the report's figures
     // (--list, 2^16 iterations): shade_tube_light's signed error against MC of the cylinder, that MC's
     // relative standard error, and the ribbon's silhouette error (MC of the GGX over the quad against MC
     // of the cylinder) and that MC's. Bound as test_shape_lights.cpp's: |reported| + 0.005% + 4 standard

@@ -149,7 +149,7 @@ lobe_errors errors_against_two_lobes(double theta, double r, const std::vector<d
 }  // namespace
 
 TEST_CASE("two lobes against the Monte Carlo GGX ground truth at grazing views", "[two_lobe][ground_truth]") {
-    // Where one lobe is weakest (examples/ggx_error_report: theta_v = 80 deg, roughness 0.25-0.5,
+    // Where one lobe is weakest (tools/ggx_error_report: theta_v = 80 deg, roughness 0.25-0.5,
     // lights off the lobe's peak): theta_v in {70, 80} deg, roughness in {0.3, 0.5}, and three
     // 0.5 x 0.25 rectangles facing the origin at distance 1: "mirror" (azimuth 180 deg, elevation
     // 90 - theta_v), "zenith" (elevation 80 deg, azimuth 0) and "side" (azimuth 90, elevation 30).

@@ -28,11 +28,11 @@ report() {  # report FILE TITLE COMMAND...: the command's output as a text block
   { echo "# $title"; echo; echo "$stamp"; echo; echo '```text'; "$@"; echo '```'; } >"$out/$file"
 }
 report ggx_error.md "GGX shading against Monte Carlo ground truth (one-lobe table)" \
-  "$build/examples/ggx_error_report" --fit-sizes 0 --objectives none
+  "$build/tools/ggx_error_report" --fit-sizes 0 --objectives none
 report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo ground truth" \
-  "$build/examples/shape_error_report"
+  "$build/tools/shape_error_report"
 report textured_error.md "Textured lights against Monte Carlo ground truth" \
-  "$build/examples/textured_error_report"
+  "$build/tools/textured_error_report"
 echo "results: benchmarks" >&2
 python3 "$root/benchmarks/speed_tables.py" --build "$build" --out "$build/speed" \
   --image "$build/speed/speed.png" >"$build/speed/tables.md"

@@ -371,7 +371,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
     // which the L3 term's frozen samples hit or miss at random. The next node, started from it,
     // then sees a noisy objective, and Nelder-Mead stopped on its first simplex along whole rows
     // (docs/design_notes.md). A table also interpolates a spike's matrix into its neighbours
-    // (examples/ggx_error_report --grid off).
+    // (tools/ggx_error_report --grid off).
     // With the cosine as lobe 1, only the LTC can drift; a dead LTC becomes the cosine (the node
     // all cosine), and the cosine, fixed, stays whatever its share.
     constexpr double dead = 1e-3;
@@ -383,7 +383,7 @@ two_lobe_result fit_two_lobes(double cos_theta, double alpha, const two_lobe_sta
 }
 
 /// The shipped two-lobe tables' size (ltc/tables/ggx_two_lobe.hpp): 32 x 32, where the two-lobe
-/// fit's cost and its error (examples/ggx_error_report, section 8) meet (docs/design_notes.md).
+/// fit's cost and its error (tools/ggx_error_report, section 8) meet (docs/design_notes.md).
 inline constexpr int two_lobe_default_size = 32;
 
 /// A size x size table of two-lobe nodes (nodes[a * size + t], as ltc::fit::table).
@@ -480,10 +480,10 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
 /// Robustness: a lobe left with almost no share is dropped (fit_two_lobes), and the nodes that
 /// land on a plateau of the objective are refitted from their one-lobe fit as a single lobe
 /// (detail::fit_two_lobes_guarded): each fixed a failure of the table between the nodes of the
-/// error report's grid (tests/test_two_lobe.cpp; examples/ggx_error_report --grid off). Caveat:
+/// error report's grid (tests/test_two_lobe.cpp; tools/ggx_error_report --grid off). Caveat:
 /// the fit stays fragile where the lobes' parts are not settled (roughness 0.2-0.25 at grazing
 /// views), since nodes are marched from their neighbours and a table interpolates lobe by lobe
-/// (examples/ggx_error_report, section 8).
+/// (tools/ggx_error_report, section 8).
 template <template <typename> class Brdf>
 two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two_lobe_model::two_ltcs) {
     if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_two_lobe_table: size must be at least 2");

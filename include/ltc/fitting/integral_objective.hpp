@@ -132,7 +132,7 @@ struct integral_family {
 ///              tests/test_fit_objective.cpp), with hexagons of radius 0.15, 0.45 and 0.9 rad on
 ///              each: 48 hexagons. Its lowest hexagons straddle the horizon in the tails, where
 ///              the quadrature is least accurate (integral_family).
-/// This family is deliberately not the grid of examples/ggx_error_report (rectangles, triangles,
+/// This family is deliberately not the grid of tools/ggx_error_report (rectangles, triangles,
 /// pentagons at fixed placements and angular radii whatever the roughness), so that the report
 /// measures generalization (docs/design_notes.md: the nearest placements of the two).
 inline std::vector<family_polygon> polygon_family(const glm::dvec3& axis, double alpha,

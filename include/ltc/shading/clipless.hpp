@@ -103,7 +103,7 @@ inline T integrate_signed(const transformed<clamped_cosine<T, Policy>>& d, const
 
 /// Clipless approximation of d.integrate(vertices, n, side).
 ///
-/// Where it breaks down (tests/test_clipless.cpp and examples/ggx_error_report/ measure it): the
+/// Where it breaks down (tests/test_clipless.cpp and tools/ggx_error_report/ measure it): the
 /// approximation is exact when the polygon and its sphere are both entirely above the horizon
 /// (both integrals are then F.z; the sphere is above iff cos(omega) >= sin(sigma), i.e.
 /// F.z >= |F|^(3/2)) or both entirely below (both 0), and for caps. Otherwise the sphere

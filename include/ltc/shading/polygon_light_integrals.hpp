@@ -52,7 +52,7 @@ LTC_NAMESPACE_BEGIN
 /// sphere_table are exact for compact lights well above the horizon, but the sphere stands in for
 /// M^-1 P, which a sharp lobe stretches into a large, elongated polygon; the table adds at most
 /// 2.3e-3 |F| (ltc/shading/sphere_table.hpp). Their errors against the ground truth:
-/// docs/results/ (examples/ggx_error_report); the comparison made when they were written:
+/// docs/results/ (tools/ggx_error_report); the comparison made when they were written:
 /// docs/design_notes.md.
 ///
 /// Cost and memory: no allocation for any n. ltc_space streams the vertices through the

@@ -51,7 +51,7 @@ LTC_NAMESPACE_BEGIN
 /// would weight their texels wrongly, most of all in a leaf that takes only the lobe's tail next
 /// to its border (docs/design_notes.md: why the fetch is not kept to the leaves that hold a
 /// quarter of I_D). Its error against Monte Carlo and its cost against the fetch:
-/// docs/design_notes.md, "Textured polygonal lights" (examples/textured_error_report,
+/// docs/design_notes.md, "Textured polygonal lights" (tools/textured_error_report,
 /// benchmarks/bench_textured.cpp).
 template <typename T>
 inline cells_result<T> integrate_quick_cells(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],

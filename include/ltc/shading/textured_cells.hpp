@@ -205,7 +205,7 @@ inline cells_result<T> integrate_textured_cells_with(const transformed<clamped_c
 /// Cost: the cells of the level two below the last (at most 4 x 4) are integrated first, in one
 /// call of the float batch kernel (ltc/shading/batch.hpp), and the levels above take their sums
 /// (I_D adds up over cells of one orientation); below that, each step refines the two leaves of
-/// largest bound, integrating their up to 8 children in one call (examples/textured_error_report
+/// largest bound, integrating their up to 8 children in one call (tools/textured_error_report
 /// prints the integrals per method). Double integrates cell by cell (its default policy, exact,
 /// has no SIMD kernel).
 ///

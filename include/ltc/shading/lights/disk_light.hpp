@@ -32,7 +32,7 @@ LTC_NAMESPACE_BEGIN
 /// radius, and its radiance. One-sided disks emit towards +normal, two-sided ones from both
 /// faces. Radius <= 0 or NaN, or a zero normal, is a disk that emits nothing. Both integrals are
 /// exact to rounding (the horizon clipped exactly); the shading's error is the GGX fit's
-/// (examples/shape_error_report, docs/results/shape_error.md: against Monte Carlo of the real
+/// (tools/shape_error_report, docs/results/shape_error.md: against Monte Carlo of the real
 /// GGX). Degenerate input gives finite results: radius <= 0, the point in the disk's plane
 /// (edge-on) give 0; see ltc/core/ellipse_integral.hpp.
 template <typename T>

@@ -32,7 +32,7 @@ LTC_NAMESPACE_BEGIN
 /// radiance; an aggregate. A tube glows all around: no sidedness; no end caps. I_line is exact in
 /// the limit of a thin tube (r small against the distance to the point: the cylinder's solid
 /// angle is 2r d/|x|^3 dl + O(r^2) per axis element); a point close to the tube (distance ~ r)
-/// sees it wider than that, an error examples/shape_error_report (docs/results/shape_error.md)
+/// sees it wider than that, an error tools/shape_error_report (docs/results/shape_error.md)
 /// compares with Monte Carlo of the real cylinder, with the GGX fit's. For close or wide tubes:
 /// ltc/shading/lights/tube_light.hpp. Degenerate input gives finite results: radius <= 0 or NaN,
 /// p0 = p1, an axis through the shading point give 0.

@@ -70,7 +70,7 @@ inline sphere_view<T> view_sphere(const glm::vec<3, T>& P, const glm::vec<3, T>&
 /// disk integral). World space; an aggregate (no invariant to check). The sphere glows all
 /// around: no sidedness. A shading point inside the sphere or on it (d <= R) sees it in every
 /// direction: the whole LTC, I = 1 (D integrates to 1), and E = 1; radius <= 0 or non-finite
-/// input gives 0. The shading's error is the GGX fit's (examples/shape_error_report,
+/// input gives 0. The shading's error is the GGX fit's (tools/shape_error_report,
 /// docs/results/shape_error.md, including spheres straddling the horizon and points close to the
 /// sphere).
 template <typename T>

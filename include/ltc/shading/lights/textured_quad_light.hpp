@@ -61,7 +61,7 @@ LTC_NAMESPACE_BEGIN
 /// foot point with a filter of the wrong width and shape, the detail is missed (the result is the
 /// background) or smeared over the wrong place. The paper presents I_L as an approximation for
 /// this reason; the cell methods (textured_method) integrate the texel-constant texture instead.
-/// The methods' errors against Monte Carlo: examples/textured_error_report, and docs/design_notes.md
+/// The methods' errors against Monte Carlo: tools/textured_error_report, and docs/design_notes.md
 /// ("Textured polygonal lights").
 template <typename T>
 inline glm::vec<3, T> integrate_textured_quad(const transformed<clamped_cosine<T>>& d, const glm::vec<3, T> quad[4],

@@ -124,7 +124,7 @@ inline tube_ribbon<T> make_tube_ribbon(const glm::vec<3, T>& P, const glm::vec<3
 /// circle, so the ribbon's hit point along the axis lies between the cylinder's two; near the
 /// planes of p0 and p1 the ray can hit the cylinder and miss the ribbon or the converse: a sliver
 /// of directions O(r / length) of the tube's, near each end (the "ribbon" columns of
-/// examples/shape_error_report, docs/results/shape_error.md: the GGX over the quad by Monte Carlo
+/// tools/shape_error_report, docs/results/shape_error.md: the GGX over the quad by Monte Carlo
 /// against the real cylinder's).
 ///
 /// P within r of the axis (rho <= r; tube_ribbon's `inside`): within the span (0 <= along <= L)

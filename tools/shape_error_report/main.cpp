@@ -5,7 +5,7 @@
 //
 // Direct build (as examples/CMakeLists.txt does); the run takes about 8 s on 2 cores (15 s of CPU):
 //   g++ -std=gnu++17 -O2 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Iexamples
-//       examples/shape_error_report/*.cpp -o shape_error_report -pthread   (one line)
+//       tools/shape_error_report/*.cpp -o shape_error_report -pthread   (one line)
 //
 // For every configuration of the grid below it computes the Monte Carlo truth of
 // int_light rho_GGX(V, L) cos(theta_L) dL of the real shape (ltc/reference/shape_ground_truth.hpp:
@@ -81,7 +81,7 @@ void print_help(const char* argv0) {
         "usage: %s [--samples N] [--threads K] [--list]\n"
         "\n"
         "LTC shading of sphere, disk and tube lights against Monte Carlo of the real GGX integral\n"
-        "(the file comment of examples/shape_error_report/main.cpp). About 8 s on 2 cores.\n"
+        "(the file comment of tools/shape_error_report/main.cpp). About 8 s on 2 cores.\n"
         "\n"
         "  --samples N   Monte Carlo iterations per configuration (default 65536)\n"
         "  --threads K   worker threads (default: all hardware threads)\n"

@@ -49,7 +49,7 @@
 // at least 1e-3 of the BRDF's directional albedo (the rest are invisible next to any light
 // that faces the lobe; they are counted and their error is reported as |LTC - GT| / albedo).
 //
-// Source files (examples/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
+// Source files (tools/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
 // LTC estimate with each method), statistics.hpp (relative errors and their summaries),
 // common/parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
 // horizon.cpp, clipless.cpp, fit_sizes.cpp, objectives.cpp), and this file: the command line, the
@@ -113,7 +113,7 @@ void print_help(const char* argv0) {
         "\n"
         "LTC shading of polygonal lights (the shipped GGX table, each horizon-clipping method) against\n"
         "Monte Carlo ground truth over a grid of 720 configurations; then tables fitted here at other\n"
-        "sizes and with other objectives (the file comment of examples/ggx_error_report/main.cpp).\n"
+        "sizes and with other objectives (the file comment of tools/ggx_error_report/main.cpp).\n"
         "About 40 s on 2 cores, plus 10-20 s per objective.\n"
         "\n"
         "  --fit-sizes LIST       section 7's table sizes, comma-separated (default 8,16,32; 0: none)\n"

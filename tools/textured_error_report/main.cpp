@@ -58,7 +58,7 @@
 //   5. the largest texture errors of each method (against the MC and the exact integral).
 //   6. the prefilter's timing for a 1024 x 1024 image (ltc::light_texture<float>).
 //
-// Source files (examples/textured_error_report/): setup.hpp (textures, MC densities, the grid,
+// Source files (tools/textured_error_report/): setup.hpp (textures, MC densities, the grid,
 // seeds), evaluate.hpp (one configuration: methods and MC), statistics.hpp (the errors and their
 // summaries), report.hpp / report.cpp (sections 1-5), and this file; worker threads from
 // examples/common/parallel_for.hpp.
@@ -87,7 +87,7 @@ void print_help(const char* argv0) {
         "usage: %s [--threads K]\n"
         "\n"
         "Each textured-light method of ltc/shading/textured_light.hpp against Monte Carlo of its\n"
-        "texture's integral (the file comment of examples/textured_error_report/main.cpp). About\n"
+        "texture's integral (the file comment of tools/textured_error_report/main.cpp). About\n"
         "25-35 s on 2 cores; the output does not depend on the thread count.\n"
         "\n"
         "  --threads K   worker threads (default: all hardware threads)\n"
