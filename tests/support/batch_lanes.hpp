@@ -73,6 +73,11 @@ void lane_stages(ltc::batch::isa which, const std::vector<T> (&in)[7], lane_stag
     (void)which, (void)in, (void)out, (void)count, (void)table;
 }
 
+/// The lobe set of the kernel's old parameters: one table, two, or the cosine and an LTC.
+template <int Lobes, bool Cosine, typename T>
+using kernel_lobes = std::conditional_t<Lobes == 1, ltc::lobes::one<T>,
+                                        std::conditional_t<Cosine, ltc::lobes::ltc_and_cosine<T>, ltc::lobes::two<T>>>;
+
 /// The shading kernel of `which` alone: points [0, returned) written, NaN in specular red where
 /// it hands a point back to the scalar function; lobe l's coefficients from tables[l] (with
 /// Cosine, tables[0] the cosine lobe's, integrated as the form factor, tables[1] the LTC's,
@@ -82,18 +87,20 @@ std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shad
                            const ltc::batch::shading_points<T>& points, const ltc::batch::shading_results<T>& out,
                            std::size_t count,
                            const ltc::ltc_table* const (&tables)[Lobes]) {
+    using set = kernel_lobes<Lobes, Cosine, T>;
+    const auto surfaces = ltc::batch::detail::surfaces_of(points, count);
 #if LTC_SIMD_AVX512
     if (which == ltc::batch::isa::avx512)
-        return ltc::batch::detail::run_shade_avx512<Policy, Lobes, Cosine>(tables, light, points, out, count);
+        return ltc::batch::detail::run_shade_avx512<Policy, set>(tables, light, surfaces, out);
 #endif
 #if LTC_SIMD_AVX2
     if (which == ltc::batch::isa::avx2)
-        return ltc::batch::detail::run_shade_avx2<Policy, Lobes, Cosine>(tables, light, points, out, count);
+        return ltc::batch::detail::run_shade_avx2<Policy, set>(tables, light, surfaces, out);
 #endif
 #if LTC_SIMD
-    return ltc::batch::detail::run_shade_baseline<Policy, Lobes, Cosine>(tables, light, points, out, count);
+    return ltc::batch::detail::run_shade_baseline<Policy, set>(tables, light, surfaces, out);
 #else
-    (void)which, (void)light, (void)points, (void)out, (void)count, (void)tables;
+    (void)which, (void)light, (void)surfaces, (void)out, (void)tables;
     return 0;
 #endif
 }
