@@ -258,13 +258,33 @@ void shade_lights(const Model& model, const surface<T>& s, const polygon_lights<
     const T* ys[N];
     const T* zs[N];
     for (std::size_t k = 0; k < N; ++k) xs[k] = x[k], ys[k] = y[k], zs[k] = z[k];
+    // The walking order of every light, or of each (checked as lights.light does).
+    const bool same_order = lights.same_order_for_all();
+    const bool all_reversed = same_order && count > 0 && lights.reversed(0);
+    bool reversed[block];
     for (std::size_t base = 0; base < count; base += block) {
         const std::size_t b = count - base < block ? count - base : block;
-        for (std::size_t j = 0; j < b; ++j) {
-            const polygon_light<T> light = lights.light(base + j, buffer);
-            for (std::size_t k = 0; k < N; ++k) {
-                const vec3 d = light.vertex(k) - s.position;
-                x[k][j] = glm::dot(d, p.frame.t1), y[k][j] = glm::dot(d, p.frame.t2), z[k][j] = glm::dot(d, p.frame.n);
+        for (std::size_t j = 0; j < b; ++j) reversed[j] = same_order ? all_reversed : lights.reversed(base + j);
+        // frame.to_local(p - P) of vertex k of each light's walk, axis by axis over the block.
+        for (std::size_t k = 0; k < N; ++k) {
+            const std::size_t r = N - 1 - k;
+            const T* fx = lights.coordinates(0, k) + base;
+            const T* fy = lights.coordinates(1, k) + base;
+            const T* fz = lights.coordinates(2, k) + base;
+            const T* rx = lights.coordinates(0, r) + base;
+            const T* ry = lights.coordinates(1, r) + base;
+            const T* rz = lights.coordinates(2, r) + base;
+            if (same_order) {
+                if (all_reversed) fx = rx, fy = ry, fz = rz;
+                for (std::size_t j = 0; j < b; ++j) {
+                    const vec3 d = vec3(fx[j], fy[j], fz[j]) - s.position;
+                    x[k][j] = glm::dot(d, p.frame.t1), y[k][j] = glm::dot(d, p.frame.t2), z[k][j] = glm::dot(d, p.frame.n);
+                }
+            } else {
+                for (std::size_t j = 0; j < b; ++j) {
+                    const vec3 d = (reversed[j] ? vec3(rx[j], ry[j], rz[j]) : vec3(fx[j], fy[j], fz[j])) - s.position;
+                    x[k][j] = glm::dot(d, p.frame.t1), y[k][j] = glm::dot(d, p.frame.t2), z[k][j] = glm::dot(d, p.frame.n);
+                }
             }
         }
         const std::size_t vectorized = integrate_vectorized<EdgePolicy, N>(
@@ -280,7 +300,7 @@ void shade_lights(const Model& model, const surface<T>& s, const polygon_lights<
                 continue;
             }
             // ltc::shade_lobes's terms in its order (light.emitted: radiance * scale * integral).
-            const vec3 L = lights.radiance(base + j);
+            const vec3 L = lights.radiances().at(base + j);
             shading_result<T> r;
             r.specular = L * brdf[0] * I[0][j];
             r.diffuse = L * s.albedo * E[j];

@@ -211,6 +211,19 @@ public:
     vec3 vertex(std::size_t i, std::size_t k) const { return vec3(x_[k][i], y_[k][i], z_[k][i]); }
     vec3 radiance(std::size_t i) const { return radiance_.at(i); }
 
+    /// The array of coordinate c (0: x, 1: y, 2: z) of vertex k of every light.
+    const T* coordinates(int c, std::size_t k) const { return c == 0 ? x_[k] : c == 1 ? y_[k] : z_[k]; }
+    const vec3_field<T>& radiances() const { return radiance_; }
+    /// Whether the facing rule is the same for every light (winding or two-sided): then so is
+    /// the order in which they walk their vertices.
+    bool same_order_for_all() const { return rule_ != rule::emission_normal; }
+    /// Whether light i walks its vertices in reverse (as light(i, buffer) does, checked as it is).
+    bool reversed(std::size_t i) const {
+        vec3 buffer[N];
+        const polygon_light<T> l = light(i, buffer);
+        return &l.vertex(0) != &buffer[0];  // vertex 0 of the walk: buffer[N - 1] where reversed
+    }
+
     /// Light i as ltc::shade takes it (checked as its factory), over its vertices copied to buffer.
     polygon_light<T> light(std::size_t i, vec3 (&buffer)[N]) const {
         for (std::size_t k = 0; k < N; ++k) buffer[k] = vertex(i, k);
