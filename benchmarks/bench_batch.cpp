@@ -207,7 +207,8 @@ struct shading_scene {
             for (int c = 0; c < 16; ++c) a[c].push_back(v[c]);
         }
         const glm::vec3 centre(0.3f, 0.5f, 1.2f), ex(0.75f, 0, 0), ey(0, 0.4f * 0.5f, 0.4f * 0.866f);
-        light[0] = centre - ex - ey, light[1] = centre + ex - ey, light[2] = centre + ex + ey, light[3] = centre - ex + ey;
+        light[0] = centre - ex - ey, light[1] = centre + ex - ey;
+        light[2] = centre + ex + ey, light[3] = centre - ex + ey;
         ltc::ground_truth::splitmix64 h(7);
         for (std::size_t j = 0; j < kItems; ++j) {
             const glm::vec3 shift(float(h.uniform()) - 0.5f, float(h.uniform()) - 0.5f, 0.5f * float(h.uniform()));
@@ -225,10 +226,15 @@ struct shading_scene {
         return ltc::batch::shading_points<float>::from_columns(c);
     }
     ltc::batch::surfaces<float> surfaces(bool uniform_colours) const {
-        ltc::batch::surfaces<float> s{kItems, {a[0].data(), a[1].data(), a[2].data()}, {a[3].data(), a[4].data(), a[5].data()},
-                                      {a[6].data(), a[7].data(), a[8].data()}, a[9].data(),
-                                      {a[10].data(), a[11].data(), a[12].data()}, {a[13].data(), a[14].data(), a[15].data()}};
-        if (uniform_colours) s.f0 = ltc::batch::uniform(0.04f), s.albedo = ltc::batch::uniform(glm::vec3(0.8f, 0.6f, 0.4f));
+        ltc::batch::surfaces<float> s{kItems,
+                                      {a[0].data(), a[1].data(), a[2].data()},
+                                      {a[3].data(), a[4].data(), a[5].data()},
+                                      {a[6].data(), a[7].data(), a[8].data()},
+                                      a[9].data(),
+                                      {a[10].data(), a[11].data(), a[12].data()},
+                                      {a[13].data(), a[14].data(), a[15].data()}};
+        if (uniform_colours)
+            s.f0 = ltc::batch::uniform(0.04f), s.albedo = ltc::batch::uniform(glm::vec3(0.8f, 0.6f, 0.4f));
         return s;
     }
     ltc::batch::quad_lights<float> quads() const {
@@ -244,8 +250,8 @@ struct shading_scene {
         const float* ys[4] = {ly[0].data(), ly[1].data(), ly[2].data(), ly[3].data()};
         const float* zs[4] = {lz[0].data(), lz[1].data(), lz[2].data(), lz[3].data()};
         if (emission_normal)
-            return ltc::batch::polygon_lights<float>::one_sided(kItems, xs, ys, zs, ltc::batch::uniform(glm::vec3(0, 0, -1)),
-                                                                ltc::batch::uniform(radiance));
+            return ltc::batch::polygon_lights<float>::one_sided(
+                kItems, xs, ys, zs, ltc::batch::uniform(glm::vec3(0, 0, -1)), ltc::batch::uniform(radiance));
         return ltc::batch::polygon_lights<float>::two_sided(kItems, xs, ys, zs, ltc::batch::uniform(radiance));
     }
     ltc::surface<float> centre() const {

@@ -273,7 +273,8 @@ void check_points(std::uint64_t seed) {
         for (int k = 0; k < 7; ++k) stage_in[k] = pts.a[3 + k];
         std::vector<ltc_test::lane_stage_results_of<T>> stages(tables.size());
         if (isa != ltc::batch::isa::scalar)
-            for (std::size_t l = 0; l < tables.size(); ++l) ltc_test::lane_stages(isa, stage_in, stages[l], count, tables[l]);
+            for (std::size_t l = 0; l < tables.size(); ++l)
+                ltc_test::lane_stages(isa, stage_in, stages[l], count, tables[l]);
         std::size_t lanes = 0, crossings = 0;  // over the lights of this isa
         for (const facing f : facings) {
             const std::size_t sizes[] = {3, 4, 5, 7, 18};  // 18: beyond the kernel's stack buffer
@@ -319,7 +320,8 @@ void check_points(std::uint64_t seed) {
                     ltc::shading_result<double> sum;
                     int l = 0;
                     for (const auto& lobe : lobe_list(c)) {
-                        const auto one = ltc::shade_lobes<Policy>(point, ltc::lobes::one<T>{lobe}, light, ltc::shade_options{});
+                        const auto one =
+                            ltc::shade_lobes<Policy>(point, ltc::lobes::one<T>{lobe}, light, ltc::shade_options{});
                         const auto t = tolerance(frame, lobe, P, F0, albedo, radiance, walk, one);
                         if (l++ == 0) {
                             tol = t, sum.specular = glm::dvec3(one.specular);
@@ -329,7 +331,8 @@ void check_points(std::uint64_t seed) {
                         }
                     }
                     const std::size_t viol = violations(got, want, tol);
-                    CAPTURE(got.specular.x, want.specular.x, tol.specular.x, got.diffuse.x, want.diffuse.x, tol.diffuse.x);
+                    CAPTURE(got.specular.x, want.specular.x, tol.specular.x, got.diffuse.x, want.diffuse.x,
+                            tol.diffuse.x);
                     CHECK(viol == 0);
                     bad += viol;
                     bool above = false, below = false;
@@ -444,7 +447,8 @@ void check_bad_points() {
             std::size_t differ = 0, not_zero = 0, lanes_not_zero = 0, kept = 0, not_clamped = 0, nonfinite = 0;
             for (std::size_t i = 0; i < count; ++i) {
                 const auto got = out.at(i), want = ltc::shade<Model, Policy>(pts.view().at(i), light);
-                for (int c = 0; c < 3; ++c) nonfinite += !std::isfinite(got.specular[c]) || !std::isfinite(got.diffuse[c]);
+                for (int c = 0; c < 3; ++c)
+                    nonfinite += !std::isfinite(got.specular[c]) || !std::isfinite(got.diffuse[c]);
                 const bool scalar = i >= vectorized || std::isnan(kernel.c[0][i]);
                 if (scalar || what[i] == unshaded || what[i] == handed_back) differ += !same_bits(got, want);
                 if (what[i] == unshaded) {
@@ -544,7 +548,9 @@ struct lights_of {
     using vec3 = glm::vec<3, T>;
     std::size_t count;
     std::vector<T> x[N], y[N], z[N], radiance[3], normal[3];
-    lights_of(std::size_t n, std::uint64_t seed, bool reverse = false) : count(n) {
+    // grazing: each emission normal nearly in its light's plane (an edge's direction plus 1e-6
+    // to 1e-2 of the plane's normal, either side), where the facing's sign rests on few bits.
+    lights_of(std::size_t n, std::uint64_t seed, bool reverse = false, bool grazing = false) : count(n) {
         ltc_test::rng g(seed);
         for (std::size_t j = 0; j < n; ++j) {
             const auto p = ltc_test::random_polygon(g, N, true, j % 2 == 0);
@@ -552,8 +558,14 @@ struct lights_of {
                 const auto& q = p[reverse ? N - 1 - k : k];
                 x[k].push_back(T(q.x)), y[k].push_back(T(q.y)), z[k].push_back(T(q.z));
             }
-            const glm::dvec3 e = g.direction();
-            for (int c = 0; c < 3; ++c) radiance[c].push_back(T(float(g.uniform(0.5, 4)))), normal[c].push_back(T(float(e[c])));
+            glm::dvec3 e = g.direction();
+            if (grazing) {
+                const glm::dvec3 edge = glm::normalize(glm::dvec3(p[1] - p[0]));
+                const glm::dvec3 plane = glm::normalize(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0])));
+                e = edge + (j % 2 ? 1.0 : -1.0) * std::pow(10.0, -double(2 + j % 5)) * plane;
+            }
+            for (int c = 0; c < 3; ++c)
+                radiance[c].push_back(T(float(g.uniform(0.5, 4)))), normal[c].push_back(T(float(e[c])));
         }
     }
     ltc::batch::polygon_lights<T, N> view(facing f) const { return view(f, normals(), radiances()); }
@@ -584,70 +596,76 @@ void check_lights(std::uint64_t seed) {
     using vec3 = glm::vec<3, T>;
     constexpr double u = unit_roundoff<T>;
     const std::size_t count = 517;  // blocks of 16-multiples: the last count % width are the tail
-    const lights_of<T, N> soa(count, seed), soa_reversed(count, seed, true);
+    const lights_of<T, N> soa(count, seed), soa_reversed(count, seed, true), grazing(count, seed + 1, false, true);
     const vec3 P(T(0.1), T(-0.2), T(0.05)), Nrm(T(0.2), T(0.1), T(1)), V(T(0.7), T(-0.3), T(0.5)),
         F0(T(0.9), T(0.6), T(0.3)), albedo(T(0.5));
     for (const T roughness : {T(0.1), T(0.6)})
         for (const facing f : facings)
-            for (const auto isa : ltc::batch::instruction_sets) {
-                if (!ltc::batch::available(isa)) continue;
-                const ltc::surface<T> s{P, Nrm, V, roughness, F0, albedo};
-                const auto lights = soa.view(f);
-                results_of<T> out(count);
-                ltc::batch::shade<Model, Policy>(s, lights, out.view(), isa);
-                const ltc::shading_frame<T> frame = ltc::make_shading_frame(Nrm, V);
-                const auto c = Model::template fetch<T>(frame.cos_theta_v, roughness);
-                const ltc::shading_point<T> point{frame, P, F0, albedo};
-                const std::size_t width = ltc::batch::lane_count<T>(isa);
-                std::size_t bad = 0, exact = 0;
-                for (std::size_t j = 0; j < count; ++j) {
-                    vec3 buffer[N];
-                    const auto light = lights.light(j, buffer);
-                    const auto want = ltc::shade<Model, Policy>(s, light);
-                    const auto got = out.at(j);
-                    if (isa == ltc::batch::isa::scalar || j >= count - count % width) {
-                        exact += !same_bits(got, want);
-                        continue;
-                    }
-                    ltc::shading_result<double> tol, sum;
-                    int l = 0;
-                    for (const auto& lobe : lobe_list(c)) {
-                        const auto one = ltc::shade_lobes<Policy>(point, ltc::lobes::one<T>{lobe}, light, ltc::shade_options{});
-                        const auto t = tolerance(frame, lobe, P, F0, albedo, light.radiance(), walked(light), one);
-                        if (l++ == 0) {
-                            tol = t, sum.specular = glm::dvec3(one.specular);
-                        } else {
-                            sum.specular += glm::dvec3(one.specular);
-                            tol.specular += t.specular + 2 * u * glm::abs(sum.specular);
+            for (const auto isa : ltc::batch::instruction_sets)
+                for (int variant = 0; variant < 2; ++variant) {  // 1: the grazing emission normals
+                    if (!ltc::batch::available(isa) || (variant == 1 && f != facing::emission_normal)) continue;
+                    const ltc::surface<T> s{P, Nrm, V, roughness, F0, albedo};
+                    const auto lights = (variant == 0 ? soa : grazing).view(f);
+                    results_of<T> out(count);
+                    ltc::batch::shade<Model, Policy>(s, lights, out.view(), isa);
+                    const ltc::shading_frame<T> frame = ltc::make_shading_frame(Nrm, V);
+                    const auto c = Model::template fetch<T>(frame.cos_theta_v, roughness);
+                    const ltc::shading_point<T> point{frame, P, F0, albedo};
+                    const std::size_t width = ltc::batch::lane_count<T>(isa);
+                    std::size_t bad = 0, exact = 0;
+                    for (std::size_t j = 0; j < count; ++j) {
+                        vec3 buffer[N];
+                        const auto light = lights.light(j, buffer);
+                        const auto want = ltc::shade<Model, Policy>(s, light);
+                        const auto got = out.at(j);
+                        if (isa == ltc::batch::isa::scalar || j >= count - count % width) {
+                            exact += !same_bits(got, want);
+                            continue;
                         }
+                        ltc::shading_result<double> tol, sum;
+                        int l = 0;
+                        for (const auto& lobe : lobe_list(c)) {
+                            const auto one =
+                                ltc::shade_lobes<Policy>(point, ltc::lobes::one<T>{lobe}, light, ltc::shade_options{});
+                            const auto t = tolerance(frame, lobe, P, F0, albedo, light.radiance(), walked(light), one);
+                            if (l++ == 0) {
+                                tol = t, sum.specular = glm::dvec3(one.specular);
+                            } else {
+                                sum.specular += glm::dvec3(one.specular);
+                                tol.specular += t.specular + 2 * u * glm::abs(sum.specular);
+                            }
+                        }
+                        const std::size_t viol = violations(got, want, tol);
+                        CAPTURE(static_cast<int>(isa), static_cast<int>(f), roughness, j, got.specular.x, want.specular.x,
+                                tol.specular.x, got.diffuse.x, want.diffuse.x, tol.diffuse.x);
+                        CHECK(viol == 0);
+                        bad += viol;
                     }
-                    const std::size_t viol = violations(got, want, tol);
-                    CAPTURE(static_cast<int>(isa), static_cast<int>(f), roughness, j, got.specular.x, want.specular.x,
-                            tol.specular.x, got.diffuse.x, want.diffuse.x, tol.diffuse.x);
-                    CHECK(viol == 0);
-                    bad += viol;
+                    CAPTURE(static_cast<int>(isa), static_cast<int>(f), roughness, variant, bad);
+                    CHECK(exact == 0);
+                    if (variant == 1) continue;
+                    // Uniform radiance and normal against arrays of the same values; the other vertex
+                    // order of lights that emit towards their normals: the same bits.
+                    if (f == facing::emission_normal) {
+                        results_of<T> rev(count);
+                        ltc::batch::shade<Model, Policy>(s, soa_reversed.view(f), rev.view(), isa);
+                        CHECK(same_bits(out, rev));
+                    }
+                    lights_of<T, N> same = soa;
+                    for (int k = 0; k < 3; ++k)
+                        for (std::size_t j = 0; j < count; ++j)
+                            same.radiance[k][j] = T(k + 1), same.normal[k][j] = T(k == 2);
+                    results_of<T> a(count), b(count);
+                    ltc::batch::shade<Model, Policy>(s, same.view(f), a.view(), isa);
+                    ltc::batch::shade<Model, Policy>(
+                        s, same.view(f, ltc::batch::uniform(vec3(0, 0, 1)), ltc::batch::uniform(vec3(1, 2, 3))),
+                        b.view(), isa);
+                    CHECK(same_bits(a, b));
                 }
-                CAPTURE(static_cast<int>(isa), static_cast<int>(f), roughness, bad);
-                CHECK(exact == 0);
-                // Uniform radiance and normal against arrays of the same values; the other vertex
-                // order of lights that emit towards their normals: the same bits.
-                if (f == facing::emission_normal) {
-                    results_of<T> rev(count);
-                    ltc::batch::shade<Model, Policy>(s, soa_reversed.view(f), rev.view(), isa);
-                    CHECK(same_bits(out, rev));
-                }
-                lights_of<T, N> same = soa;
-                for (int k = 0; k < 3; ++k)
-                    for (std::size_t j = 0; j < count; ++j) same.radiance[k][j] = T(k + 1), same.normal[k][j] = T(k == 2);
-                results_of<T> a(count), b(count);
-                ltc::batch::shade<Model, Policy>(s, same.view(f), a.view(), isa);
-                ltc::batch::shade<Model, Policy>(
-                    s, same.view(f, ltc::batch::uniform(vec3(0, 0, 1)), ltc::batch::uniform(vec3(1, 2, 3))), b.view(), isa);
-                CHECK(same_bits(a, b));
-            }
     // Points ltc::shade leaves unshaded: zeros for every light.
     const auto lights = soa.view(facing::two_sided);
-    for (const auto& s : {ltc::surface<T>{P, vec3(T(0)), V, T(0.3), F0, albedo}, ltc::surface<T>{P, Nrm, vec3(T(0)), T(0.3), F0, albedo},
+    for (const auto& s : {ltc::surface<T>{P, vec3(T(0)), V, T(0.3), F0, albedo},
+                          ltc::surface<T>{P, Nrm, vec3(T(0)), T(0.3), F0, albedo},
                           ltc::surface<T>{vec3(std::numeric_limits<T>::infinity()), Nrm, V, T(0.3), F0, albedo}})
         for (const auto isa : ltc::batch::instruction_sets) {
             if (!ltc::batch::available(isa)) continue;
@@ -670,7 +688,8 @@ TEST_CASE("batch::shade over many polygon lights matches ltc::shade light by lig
     check_lights<ltc::ggx::ltc_and_cosine, double, 4>(103);
 }
 
-TEST_CASE("batch::polygon_lights: a bad emission normal or null arrays throw ltc::invalid_light", "[batch][shade][lights]") {
+TEST_CASE("batch::polygon_lights: a bad emission normal or null arrays throw ltc::invalid_light",
+          "[batch][shade][lights]") {
     lights_of<float, 4> soa(40, 107);
     soa.normal[0][17] = soa.normal[1][17] = soa.normal[2][17] = 0.0f;  // light 17: no side
     results_of<float> out(40);
@@ -707,7 +726,8 @@ void check_old_names() {
     }
     const lights_of<T, 4> quads(count, 113);
     ltc::batch::quad_lights<T> ql;
-    for (std::size_t k = 0; k < 4; ++k) ql.x[k] = quads.x[k].data(), ql.y[k] = quads.y[k].data(), ql.z[k] = quads.z[k].data();
+    for (std::size_t k = 0; k < 4; ++k)
+        ql.x[k] = quads.x[k].data(), ql.y[k] = quads.y[k].data(), ql.z[k] = quads.z[k].data();
     for (int c = 0; c < 3; ++c) ql.radiance[c] = quads.radiance[c].data();
     ltc_test::rng g(127);
     const vec3 L(2, 1, T(0.5));
@@ -721,8 +741,10 @@ void check_old_names() {
             const auto light = side == ltc::sidedness::two_sided
                                    ? ltc::polygon_light<T>::two_sided(v.data(), 5, L)
                                    : ltc::polygon_light<T>::one_sided(v.data(), 5, ltc::winding::clockwise_front, L);
-            const auto lights = quads.view(side == ltc::sidedness::two_sided ? facing::two_sided : facing::clockwise_front);
-            const ltc::surface<T> s{pts.vec(0, 5), pts.vec(3, 5), pts.vec(6, 5), pts.a[9][5], pts.vec(10, 5), pts.vec(13, 5)};
+            const auto lights =
+                quads.view(side == ltc::sidedness::two_sided ? facing::two_sided : facing::clockwise_front);
+            const ltc::surface<T> s{pts.vec(0, 5), pts.vec(3, 5),  pts.vec(6, 5),
+                                    pts.a[9][5],   pts.vec(10, 5), pts.vec(13, 5)};
             CAPTURE(static_cast<int>(isa), side == ltc::sidedness::two_sided);
             results_of<T> a(count), b(count);
             namespace batch = ltc::batch;
@@ -744,8 +766,8 @@ void check_old_names() {
             batch::shade_polygon_light_with_table<P>(table, pts.old(), L, v.data(), 5, side, a.view(), count, isa);
             batch::shade<batch::one_lobe_table, P>(batch::one_lobe_table(table), pts.view(), light, b.view(), isa);
             check("shade_polygon_light_with_table");
-            batch::shade_quad_lights<P>(s.position, s.normal, s.view, s.roughness, s.f0, s.albedo, ql, side, a.view(), count,
-                                        isa);
+            batch::shade_quad_lights<P>(s.position, s.normal, s.view, s.roughness, s.f0, s.albedo, ql, side, a.view(),
+                                        count, isa);
             batch::shade<ltc::ggx::ltc_and_cosine, P>(s, lights, b.view(), isa);
             check("shade_quad_lights");
             batch::shade_quad_lights_cosine_lobe<P>(s.position, s.normal, s.view, s.roughness, s.f0, s.albedo, ql, side,
@@ -777,7 +799,8 @@ namespace {
 struct untabled : ltc::ggx::two_lobes {};
 
 template <typename Model, typename T, typename Light>
-std::size_t differences(const points_of<T>& pts, const Light& light, ltc::batch::isa isa, const ltc::shade_options& o = {}) {
+std::size_t differences(const points_of<T>& pts, const Light& light, ltc::batch::isa isa,
+                        const ltc::shade_options& o = {}) {
     results_of<T> out(pts.count);
     ltc::batch::shade<Model, Policy>(pts.view(), light, out.view(), isa, o);
     std::size_t differ = 0;
@@ -848,8 +871,8 @@ TEST_CASE("batch::one_lobe_table: a model of any table, its state passed first",
         const auto s = pts.view().at(i);
         const auto p = ltc::make_shading_point(s);
         differ += !same_bits(out.at(i), ltc::shade_lobes<ltc::edge_policy::automatic>(
-                                            p, ltc::lobes::one<float>{table.fetch(p.frame.cos_theta_v, s.roughness)}, light,
-                                            ltc::shade_options{}));
+                                            p, ltc::lobes::one<float>{table.fetch(p.frame.cos_theta_v, s.roughness)},
+                                            light, ltc::shade_options{}));
     }
     CHECK(differ == 0);
 }

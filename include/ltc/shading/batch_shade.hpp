@@ -74,6 +74,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -220,6 +221,59 @@ void shade_points(const Model& model, const surfaces<T>& points, const Light& li
     }
 }
 
+/// reversed[j] = lights.reversed(base + j) for j < b: the sign of each light's facing
+/// dot(vector area, emission normal) from the same operations over the block (vectorizable), and
+/// lights.reversed itself (its checks, its rounding) for the lights whose facing lies within the
+/// rounding bound below of 0 or whose normal is not finite or zero: so the decision is the
+/// factory's even where the two roundings differ (FMA contraction).
+template <typename T, std::size_t N, std::size_t Block>
+void reversed_block(const polygon_lights<T, N>& lights, std::size_t base, std::size_t b, T (&reversed)[Block]) {
+    static_assert(N >= 3, "a vector area needs three vertices");
+    constexpr T eps = std::numeric_limits<T>::epsilon();
+    // ltc::detail::vector_area_x2: a = sum over i of (v[i] - v[0]) x (v[i + 1] - v[0]) (glm's
+    // cross), vertex by vertex over the block; `size` sums |v[i] - v[0]|_1 |v[i + 1] - v[0]|_1.
+    T a[3][Block], size[Block];
+    for (std::size_t j = 0; j < b; ++j) a[0][j] = a[1][j] = a[2][j] = size[j] = T(0);
+    const T* const x0 = lights.coordinates(0, 0) + base;
+    const T* const y0 = lights.coordinates(1, 0) + base;
+    const T* const z0 = lights.coordinates(2, 0) + base;
+    for (std::size_t i = 1; i + 1 < N; ++i) {
+        const T* const x1 = lights.coordinates(0, i) + base;
+        const T* const y1 = lights.coordinates(1, i) + base;
+        const T* const z1 = lights.coordinates(2, i) + base;
+        const T* const x2 = lights.coordinates(0, i + 1) + base;
+        const T* const y2 = lights.coordinates(1, i + 1) + base;
+        const T* const z2 = lights.coordinates(2, i + 1) + base;
+        for (std::size_t j = 0; j < b; ++j) {
+            const T px = x1[j] - x0[j], py = y1[j] - y0[j], pz = z1[j] - z0[j];
+            const T qx = x2[j] - x0[j], qy = y2[j] - y0[j], qz = z2[j] - z0[j];
+            a[0][j] += py * qz - qy * pz, a[1][j] += pz * qx - qz * px, a[2][j] += px * qy - qx * py;
+            size[j] += (std::abs(px) + std::abs(py) + std::abs(pz)) * (std::abs(qx) + std::abs(qy) + std::abs(qz));
+        }
+    }
+    const vec3_field<T>& normals = lights.emission_normals();
+    T n[3][Block];
+    for (int c = 0; c < 3; ++c) {
+        const T* const p = normals.component(c);
+        const T value = normals.value[c];
+        if (p)
+            for (std::size_t j = 0; j < b; ++j) n[c][j] = p[base + j];
+        else
+            for (std::size_t j = 0; j < b; ++j) n[c][j] = value;
+    }
+    T clear[Block];
+    for (std::size_t j = 0; j < b; ++j) {
+        const T facing = a[0][j] * n[0][j] + a[1][j] * n[1][j] + a[2][j] * n[2][j];
+        // Either rounding of facing is within 4 (N + 2) eps size |n|_1 of the exact value (the
+        // differences, the products and the sums of the area, then the dot product).
+        const T bound = T(4 * (N + 2)) * eps * size[j] * (std::abs(n[0][j]) + std::abs(n[1][j]) + std::abs(n[2][j]));
+        reversed[j] = facing > T(0) ? T(1) : T(0);
+        clear[j] = std::abs(facing) > T(2) * bound && bound < std::numeric_limits<T>::max() ? T(1) : T(0);
+    }
+    for (std::size_t j = 0; j < b; ++j)
+        if (clear[j] == T(0)) reversed[j] = lights.reversed(base + j) ? T(1) : T(0);
+}
+
 /// Many polygon lights over one point (file comment): the frame and the fetch once, each
 /// light's vertices in the order it walks them in the local frame (frame.to_local(p - P)), then
 /// E (M = I) and each LTC's integral through the kernel of ltc/shading/batch.hpp, block by
@@ -258,33 +312,37 @@ void shade_lights(const Model& model, const surface<T>& s, const polygon_lights<
     const T* ys[N];
     const T* zs[N];
     for (std::size_t k = 0; k < N; ++k) xs[k] = x[k], ys[k] = y[k], zs[k] = z[k];
-    // The walking order of every light, or of each (checked as lights.light does).
+    // The walking order of every light, or of each (its factory's decision and checks).
     const bool same_order = lights.same_order_for_all();
     const bool all_reversed = same_order && count > 0 && lights.reversed(0);
-    bool reversed[block];
+    T reversed[block];
     for (std::size_t base = 0; base < count; base += block) {
         const std::size_t b = count - base < block ? count - base : block;
-        for (std::size_t j = 0; j < b; ++j) reversed[j] = same_order ? all_reversed : lights.reversed(base + j);
-        // frame.to_local(p - P) of vertex k of each light's walk, axis by axis over the block.
+        if (!same_order) reversed_block(lights, base, b, reversed);
+        // Vertex k of each light's walk (where reversed: its vertex N - 1 - k), then
+        // frame.to_local(p - P), axis by axis over the block.
         for (std::size_t k = 0; k < N; ++k) {
             const std::size_t r = N - 1 - k;
-            const T* fx = lights.coordinates(0, k) + base;
-            const T* fy = lights.coordinates(1, k) + base;
-            const T* fz = lights.coordinates(2, k) + base;
-            const T* rx = lights.coordinates(0, r) + base;
-            const T* ry = lights.coordinates(1, r) + base;
-            const T* rz = lights.coordinates(2, r) + base;
-            if (same_order) {
-                if (all_reversed) fx = rx, fy = ry, fz = rz;
-                for (std::size_t j = 0; j < b; ++j) {
-                    const vec3 d = vec3(fx[j], fy[j], fz[j]) - s.position;
-                    x[k][j] = glm::dot(d, p.frame.t1), y[k][j] = glm::dot(d, p.frame.t2), z[k][j] = glm::dot(d, p.frame.n);
+            for (int c = 0; c < 3; ++c) {
+                T* const to = c == 0 ? x[k] : c == 1 ? y[k] : z[k];
+                const T* const forward = lights.coordinates(c, k) + base;
+                const T* const backward = lights.coordinates(c, r) + base;
+                if (same_order) {
+                    const T* const from = all_reversed ? backward : forward;
+                    for (std::size_t j = 0; j < b; ++j) to[j] = from[j];
+                } else {
+                    for (std::size_t j = 0; j < b; ++j) {  // both loaded: a select, the loop vectorizes
+                        const T f = forward[j], g = backward[j];
+                        to[j] = reversed[j] != T(0) ? g : f;
+                    }
                 }
-            } else {
-                for (std::size_t j = 0; j < b; ++j) {
-                    const vec3 d = (reversed[j] ? vec3(rx[j], ry[j], rz[j]) : vec3(fx[j], fy[j], fz[j])) - s.position;
-                    x[k][j] = glm::dot(d, p.frame.t1), y[k][j] = glm::dot(d, p.frame.t2), z[k][j] = glm::dot(d, p.frame.n);
-                }
+            }
+            T* const lx = x[k];
+            T* const ly = y[k];
+            T* const lz = z[k];
+            for (std::size_t j = 0; j < b; ++j) {
+                const vec3 d = vec3(lx[j], ly[j], lz[j]) - s.position;
+                lx[j] = glm::dot(d, p.frame.t1), ly[j] = glm::dot(d, p.frame.t2), lz[j] = glm::dot(d, p.frame.n);
             }
         }
         const std::size_t vectorized = integrate_vectorized<EdgePolicy, N>(

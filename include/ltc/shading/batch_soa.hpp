@@ -214,14 +214,31 @@ public:
     /// The array of coordinate c (0: x, 1: y, 2: z) of vertex k of every light.
     const T* coordinates(int c, std::size_t k) const { return c == 0 ? x_[k] : c == 1 ? y_[k] : z_[k]; }
     const vec3_field<T>& radiances() const { return radiance_; }
+    /// The emission normals (one_sided with normals; else uniform 0).
+    const vec3_field<T>& emission_normals() const { return emission_normal_; }
     /// Whether the facing rule is the same for every light (winding or two-sided): then so is
     /// the order in which they walk their vertices.
     bool same_order_for_all() const { return rule_ != rule::emission_normal; }
-    /// Whether light i walks its vertices in reverse (as light(i, buffer) does, checked as it is).
+    /// Whether light i walks its vertices in reverse: the decision and the checks of its
+    /// polygon_light factory (ltc/shading/lights/polygon_light.hpp), without building it.
     bool reversed(std::size_t i) const {
-        vec3 buffer[N];
-        const polygon_light<T> l = light(i, buffer);
-        return &l.vertex(0) != &buffer[0];  // vertex 0 of the walk: buffer[N - 1] where reversed
+        switch (rule_) {
+            case rule::two_sided: return false;
+            case rule::winding: return front_ == winding::counter_clockwise_front;
+            case rule::emission_normal:
+            default: {
+                const vec3 normal = emission_normal_.at(i);
+                if (!ltc::detail::finite(normal) || normal == vec3(T(0)))
+                    throw invalid_light("polygon_light::one_sided: the emission normal is zero or not finite");
+                vec3 v[N];
+                for (std::size_t k = 0; k < N; ++k) v[k] = vertex(i, k);
+                const vec3 area = N >= 3 ? ltc::detail::vector_area_x2(v, N) : vec3(T(0));
+                const T facing = glm::dot(area, normal);
+                if (area != vec3(T(0)) && !(facing != T(0)))
+                    throw invalid_light("polygon_light::one_sided: the emission normal lies in the polygon's plane");
+                return facing > T(0);
+            }
+        }
     }
 
     /// Light i as ltc::shade takes it (checked as its factory), over its vertices copied to buffer.
