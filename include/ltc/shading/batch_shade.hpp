@@ -12,10 +12,10 @@
 //   auto lights = ltc::batch::polygon_lights<float>::one_sided(count, x, y, z, normals, radiances);
 //   ltc::batch::shade(ltc::surface<float>{P, N, V, roughness, F0, albedo}, lights, out);
 //
-// Results. One light over points: out item i is ltc::shade<Model, Policy>(points.at(i), light,
-// options). Many lights over one point: out item i is ltc::shade<Model, Policy>(point,
-// lights.light(i, buffer), options), light i's own contribution (sum them for the point's
-// radiance). Both are
+// Results (out holds points.count, or lights.size(), items). One light over points: item i is
+// ltc::shade<Model, Policy>(points.at(i), light, options) up to rounding (below). Many lights
+// over one point: item i is ltc::shade<Model, Policy>(point, lights.light(i, buffer), options),
+// light i's own contribution (sum them for the point's radiance). Both are
 //
 //   specular = sum over the model's lobes  L (F0 magnitude + (1 - F0) fresnel) I_lobe
 //   diffuse  = L albedo E
@@ -29,16 +29,18 @@
 //     by winding, or two-sided) with the models of ltc/shading/ggx_models.hpp, one_lobe_table, or
 //     a user's model with a model_tables specialization: one point per lane (ltc/shading/detail/
 //     batch_simd_shading.inc) over many points; over many polygon_lights, the frame and the
-//     fetch once and the lights' integrals through the kernel of ltc/shading/batch.hpp, one light
-//     per lane. Such an item differs from the scalar result by rounding only: the tolerance
-//     tests/test_batch_shading.cpp derives (the integrals' clip tolerance of tests/test_batch.cpp
-//     plus the local vertices' rounding amplified by M^-1's conditioning; the lanes' frame and
-//     fetch within tests/test_batch_lanes.cpp's bounds), float and double.
+//     fetch once, each light's vertices in the order its factory walks them, and the lights'
+//     integrals through the kernel of ltc/shading/batch.hpp, one light per lane. Such an item
+//     differs from ltc::shade's by rounding only, within the tolerance tests/test_batch_shading.cpp
+//     derives (the integrals' clip tolerance of tests/test_batch.cpp plus the local vertices'
+//     rounding amplified by M^-1's conditioning; the lanes' frame and fetch within
+//     tests/test_batch_lanes.cpp's bounds), float and double (tests/test_batch_shade.cpp).
 //   - the items the kernel hands back (tiny or huge coordinates, V within rounding of N, an edge
 //     through the point: ltc/shading/detail/lanes.inc), the last count % width, isa::scalar,
 //     edge policies without a SIMD kernel (edge_policy::exact, the default in double:
 //     ltc/shading/batch.hpp), clippings other than horizon_clipping::ltc_space, and a light of
-//     fewer than 3 vertices go through ltc::shade itself: the same bits.
+//     fewer than 3 vertices go through ltc::shade itself: the same bits (where the compiler
+//     contracts no a * b + c into an FMA on its own: the CMake option LTC_FP_CONTRACT_OFF).
 //   - every other light (disk_light, sphere_light, line_light, tube_light, textured_quad_light,
 //     a user's) and models without tables: ltc::shade point by point, no SIMD (the same bits).
 //
