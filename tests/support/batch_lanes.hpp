@@ -73,29 +73,49 @@ void lane_stages(ltc::batch::isa which, const std::vector<T> (&in)[7], lane_stag
     (void)which, (void)in, (void)out, (void)count, (void)table;
 }
 
-/// The shading kernel of `which` alone: points [0, returned) written, NaN in specular red where
-/// it hands a point back to the scalar function; lobe l's coefficients from tables[l] (with
-/// Cosine, tables[0] the cosine lobe's, integrated as the form factor, tables[1] the LTC's,
-/// premultiplied).
+/// The lobe set of the kernel's old parameters: one table, two, or the cosine and an LTC.
+template <int Lobes, bool Cosine, typename T>
+using kernel_lobes = std::conditional_t<Lobes == 1, ltc::lobes::one<T>,
+                                        std::conditional_t<Cosine, ltc::lobes::ltc_and_cosine<T>, ltc::lobes::two<T>>>;
+
+/// The shading kernel of `which` alone over `points` with the lobe set Lobes (ltc::batch::
+/// lobe_set: its tables in `tables`): points [0, returned) written, NaN in specular red where it
+/// hands a point back to the scalar function.
+template <typename Policy, typename Lobes, typename T, std::size_t K>
+std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<T>& light,
+                           const ltc::batch::surfaces<T>& points, const ltc::batch::shading_results<T>& out,
+                           const ltc::ltc_table* const (&tables)[K]) {
+    static_assert(int(K) == ltc::batch::lobe_set<Lobes>::tables, "one table per table of the lobe set");
+#if LTC_SIMD_AVX512
+    if (which == ltc::batch::isa::avx512)
+        return ltc::batch::detail::run_shade_avx512<Policy, Lobes>(tables, light, points, out);
+#endif
+#if LTC_SIMD_AVX2
+    if (which == ltc::batch::isa::avx2) return ltc::batch::detail::run_shade_avx2<Policy, Lobes>(tables, light, points, out);
+#endif
+#if LTC_SIMD
+    return ltc::batch::detail::run_shade_baseline<Policy, Lobes>(tables, light, points, out);
+#else
+    (void)which, (void)light, (void)points, (void)out, (void)tables;
+    return 0;
+#endif
+}
+
+/// The lobe set of the kernel's old parameters: one table, two, or the cosine and an LTC.
+template <int Lobes, bool Cosine, typename T>
+using kernel_lobes = std::conditional_t<Lobes == 1, ltc::lobes::one<T>,
+                                        std::conditional_t<Cosine, ltc::lobes::ltc_and_cosine<T>, ltc::lobes::two<T>>>;
+
+/// The same over the old shading points, the lobe set named by the old parameters: lobe l's
+/// coefficients from tables[l] (with Cosine, tables[0] the cosine lobe's, integrated as the form
+/// factor, tables[1] the LTC's, premultiplied).
 template <typename Policy, int Lobes, bool Cosine = false, typename T>
 std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shading_light<T>& light,
                            const ltc::batch::shading_points<T>& points, const ltc::batch::shading_results<T>& out,
-                           std::size_t count,
-                           const ltc::ltc_table* const (&tables)[Lobes]) {
-#if LTC_SIMD_AVX512
-    if (which == ltc::batch::isa::avx512)
-        return ltc::batch::detail::run_shade_avx512<Policy, Lobes, Cosine>(tables, light, points, out, count);
-#endif
-#if LTC_SIMD_AVX2
-    if (which == ltc::batch::isa::avx2)
-        return ltc::batch::detail::run_shade_avx2<Policy, Lobes, Cosine>(tables, light, points, out, count);
-#endif
-#if LTC_SIMD
-    return ltc::batch::detail::run_shade_baseline<Policy, Lobes, Cosine>(tables, light, points, out, count);
-#else
-    (void)which, (void)light, (void)points, (void)out, (void)count, (void)tables;
-    return 0;
-#endif
+                           std::size_t count, const ltc::ltc_table* const (&tables)[Lobes]) {
+    return shading_kernel<Policy, kernel_lobes<Lobes, Cosine, T>>(which, light,
+                                                                   ltc::batch::detail::surfaces_of(points, count), out,
+                                                                   tables);
 }
 
 }  // namespace ltc_test

@@ -102,20 +102,15 @@ std::size_t lane_count(isa which) {
 
 namespace detail {
 
-/// Every item: the SIMD kernel over full vectors, then the scalar path where it handed back and
-/// for the tail. N > 0: the vertex count as a constant.
-template <typename Policy, std::size_t N, typename T>
-void integrate(const matrices<T>& mats, std::size_t n, const T* const* x, const T* const* y, const T* const* z, T* out,
-               std::size_t count, sidedness s, isa which) {
-    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
-    if (n < 3) {
-        for (std::size_t i = 0; i < count; ++i) out[i] = T(0);
-        return;
-    }
+/// The SIMD kernel of `which` over the full vectors of items (EdgePolicy resolved, n >= 3):
+/// returns how many it wrote, NaN where it hands an item back; 0 where `which` resolves to
+/// scalar or EdgePolicy has no SIMD kernel. N > 0: the vertex count as a constant.
+template <typename EdgePolicy, std::size_t N, typename T>
+std::size_t integrate_vectorized(const matrices<T>& mats, std::size_t n, const T* const* x, const T* const* y,
+                                 const T* const* z, T* out, std::size_t count, bool two_sided, isa which) {
     std::size_t vectorized = 0;
     if constexpr (simd_policy<EdgePolicy, T>) {
 #if LTC_SIMD
-        const bool two_sided = s == sidedness::two_sided;
         switch (resolve(which)) {
             case isa::baseline: vectorized = run_baseline<EdgePolicy, N>(mats, n, x, y, z, out, count, two_sided); break;
 #if LTC_SIMD_AVX2
@@ -128,7 +123,22 @@ void integrate(const matrices<T>& mats, std::size_t n, const T* const* x, const 
         }
 #endif
     }
-    (void)which;
+    (void)mats, (void)n, (void)x, (void)y, (void)z, (void)out, (void)count, (void)two_sided, (void)which;
+    return vectorized;
+}
+
+/// Every item: the SIMD kernel over full vectors, then the scalar path where it handed back and
+/// for the tail. N > 0: the vertex count as a constant.
+template <typename Policy, std::size_t N, typename T>
+void integrate(const matrices<T>& mats, std::size_t n, const T* const* x, const T* const* y, const T* const* z, T* out,
+               std::size_t count, sidedness s, isa which) {
+    using EdgePolicy = edge_policy::resolve_t<Policy, T>;
+    if (n < 3) {
+        for (std::size_t i = 0; i < count; ++i) out[i] = T(0);
+        return;
+    }
+    const std::size_t vectorized =
+        integrate_vectorized<EdgePolicy, N>(mats, n, x, y, z, out, count, s == sidedness::two_sided, which);
     scalar_items<EdgePolicy>(mats, x, y, z, n, out, vectorized, count, s);
 }
 

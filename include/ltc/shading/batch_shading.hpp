@@ -1,22 +1,17 @@
-// ltc/shading/batch_shading.hpp -- GGX shading of polygonal lights in batches, shaped as a
-// renderer's loops: one light over many shading points (a pass over a G-buffer, a light baker's
-// texels), and many quad lights over one point.
+// ltc/shading/batch_shading.hpp -- the deprecated GGX batch shading of polygonal lights, one
+// light over many shading points (16 arrays: shading_points) and many quad lights over one point
+// (quad_lights), each a one-line wrapper over ltc::batch::shade (ltc/shading/batch_shade.hpp),
+// whose results they are bit for bit (tests/test_batch_shade.cpp):
 //
-//   ltc::batch::shading_points<float> pts;     // SoA: P, N, V, roughness, F0, albedo per point
-//   ltc::batch::shading_results<float> res;    // SoA: specular and diffuse RGB per point
-//   ltc::batch::shade_polygon_light(pts, radiance, vertices, n, ltc::sidedness::one_sided, res, count);
+//   ltc::batch::shade_polygon_light(pts, radiance, vertices, n, side, res, count)
+//     = ltc::batch::shade(surfaces, polygon_light, res)                     (ggx::ltc_and_cosine)
+//   ltc::batch::shade_polygon_light_one_lobe(...)  = ltc::batch::shade<ltc::ggx::one_lobe>(...)
+//   ltc::batch::shade_quad_lights(P, N, V, roughness, F0, albedo, lights, side, res, count)
+//     = ltc::batch::shade(ltc::surface{P, N, V, roughness, F0, albedo}, polygon_lights, res)
 //
-// Item i gets what ltc::shade_polygon_light (ltc/shading/polygon_light.hpp) gives for it with
-// horizon_clipping::ltc_space, up to rounding (tests/test_batch_shading.cpp derives the
-// tolerance): the default GGX table of an LTC and the cosine (ltc/shading/batch_cosine_lobe.hpp),
-// the frame, the table fetch, the form factor E and the LTC integral of eq. (3). The _one_lobe
-// functions do the same with the one-lobe table (ltc::shade_polygon_light_one_lobe):
-// specular = radiance (F0 magnitude + (1 - F0) fresnel) I and diffuse = albedo radiance E. The
-// SIMD kernel and its dispatch: ltc/shading/batch_lobes.hpp.
-//
-// shade_quad_lights: one point, count quad lights (SoA vertices and radiance): the frame and the
-// fetch once, the lights moved into the local frame, then their two integrals through the kernel
-// of ltc/shading/batch.hpp; out receives each light's own contribution.
+// with the old sidedness (one-sided: the face from which the vertices turn clockwise,
+// winding::clockwise_front) and horizon_clipping::ltc_space. Kernels, tolerances and bad input:
+// ltc/shading/batch_shade.hpp (a zero or non-finite N, V or P gives 0).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -26,6 +21,7 @@
 #include <ltc/shading/batch.hpp>
 #include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/batch_lobes.hpp>
+#include <ltc/shading/batch_shade.hpp>
 #include <ltc/shading/batch_soa.hpp>
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/polygon_light.hpp>
@@ -37,45 +33,47 @@
 LTC_NAMESPACE_BEGIN
 namespace batch {
 
-/// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
-/// and the given radiance, like ltc::shade_polygon_light_one_lobe item by item.
+/// Deprecated: use ltc::batch::shade<ltc::ggx::one_lobe, Policy>(surfaces, polygon_light, out, which).
+/// Shades count points with one polygonal light of n world-space vertices (n < 3: zeros).
 template <typename Policy = edge_policy::automatic, typename T>
 void shade_polygon_light_one_lobe(const shading_points<T>& points, const glm::vec<3, T>& radiance,
                                   const glm::vec<3, T>* vertices, std::size_t n, sidedness side,
                                   const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {
-    shade_polygon_light_with_table<Policy>(ggx::table, points, radiance, vertices, n, side, out, count, which);
+    shade<ggx::one_lobe, Policy>(detail::surfaces_of(points, count),
+                                 ltc::detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance), out,
+                                 which);
 }
 
-/// Shades count points with one polygonal light of n >= 3 world-space vertices (n < 3: zeros)
-/// and the given radiance, like ltc::shade_polygon_light item by item: the default table of an
-/// LTC and the cosine: it calls shade_polygon_light_cosine_lobe.
+/// Deprecated: use ltc::batch::shade<ltc::ggx::ltc_and_cosine, Policy>(surfaces, polygon_light, out, which).
+/// Shades count points with one polygonal light, the default table of an LTC and the cosine.
 template <typename Policy = edge_policy::automatic, typename T>
 void shade_polygon_light(const shading_points<T>& points, const glm::vec<3, T>& radiance,
                          const glm::vec<3, T>* vertices, std::size_t n, sidedness side, const shading_results<T>& out,
                          std::size_t count, isa which = isa::automatic) {
-    shade_polygon_light_cosine_lobe<Policy>(points, radiance, vertices, n, side, out, count, which);
+    shade<ggx::ltc_and_cosine, Policy>(detail::surfaces_of(points, count),
+                                       ltc::detail::polygon_light_access<T>::with_sidedness(vertices, n, side, radiance),
+                                       out, which);
 }
 
-/// Shades one point (as ltc::shade_polygon_light_one_lobe takes it) with each of count quad
-/// lights and the one-lobe table: out receives light i's specular and diffuse at item i.
+/// Deprecated: use ltc::batch::shade<ltc::ggx::one_lobe, Policy>(surface, polygon_lights, out, which).
+/// One point, count quad lights: light i's specular and diffuse at item i.
 template <typename Policy = edge_policy::automatic, typename T>
 void shade_quad_lights_one_lobe(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V,
                                 T roughness, const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo,
                                 const quad_lights<T>& lights, sidedness side, const shading_results<T>& out,
                                 std::size_t count, isa which = isa::automatic) {
-    const shading_frame<T> frame = make_shading_frame(N, V);
-    const ltc_coefficients<T> lobe = ggx::fetch<T>(frame.cos_theta_v, roughness);
-    detail::shade_quad_lights_lobes<Policy>(P, frame, &lobe, 1, F0, albedo, lights, side, out, count, which);
+    shade<ggx::one_lobe, Policy>(surface<T>{P, N, V, roughness, F0, albedo}, detail::lights_of(lights, side, count), out,
+                                 which);
 }
 
-/// Shades one point (as ltc::shade_polygon_light takes it) with each of count quad lights: out
-/// receives light i's specular and diffuse at item i (sum them for the point's radiance); the
-/// default table of an LTC and the cosine: it calls shade_quad_lights_cosine_lobe.
+/// Deprecated: use ltc::batch::shade<ltc::ggx::ltc_and_cosine, Policy>(surface, polygon_lights, out, which).
+/// One point, count quad lights (the default table): light i's specular and diffuse at item i.
 template <typename Policy = edge_policy::automatic, typename T>
 void shade_quad_lights(const glm::vec<3, T>& P, const glm::vec<3, T>& N, const glm::vec<3, T>& V, T roughness,
                        const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo, const quad_lights<T>& lights,
                        sidedness side, const shading_results<T>& out, std::size_t count, isa which = isa::automatic) {
-    shade_quad_lights_cosine_lobe<Policy>(P, N, V, roughness, F0, albedo, lights, side, out, count, which);
+    shade<ggx::ltc_and_cosine, Policy>(surface<T>{P, N, V, roughness, F0, albedo},
+                                       detail::lights_of(lights, side, count), out, which);
 }
 
 }  // namespace batch

@@ -9,6 +9,7 @@
 #include <ltc/detail/math.hpp>
 #include <ltc/shading/detail/lanes.hpp>
 #include <ltc/shading/detail/simd.hpp>
+#include <ltc/shading/batch_lobe_set.hpp>
 #include <ltc/shading/batch_soa.hpp>
 #include <ltc/tables/ltc_table.hpp>
 
@@ -27,8 +28,9 @@ template <typename Policy, typename T>
 inline constexpr bool simd_policy = LTC_SIMD && (std::is_same_v<T, float> || std::is_same_v<T, double>) &&
                                     std::is_base_of_v<ltc::detail::symmetric_fit<Policy>, Policy>;
 
-/// The light of a shading batch (ltc/shading/batch_shading.hpp), the same for every lane:
-/// its n world-space vertices (x[k], y[k], z[k]), radiance and sidedness.
+/// The light of a batch over many points (ltc::batch::shade), the same for every lane: its n
+/// world-space vertices (x[k], y[k], z[k]) in the order the light walks them (its front the side
+/// from which they turn clockwise), radiance and sidedness.
 template <typename T>
 struct shading_light {
     const T* x;
@@ -74,12 +76,12 @@ LTC_SIMD_AVX2_TARGET std::size_t run_avx2(const matrices<T>& mats, std::size_t n
     return avx2::integrate_items<Policy, N>(mats, n, x, y, z, out, count, two_sided);
 }
 
-/// Points [0, returned) through the AVX2 shading kernel, with the sum of the LTCs of Lobes tables.
-template <typename Policy, int Lobes, bool Cosine = false, typename T>
+/// Points [0, returned) through the AVX2 shading kernel, with the lobe set Lobes (batch::lobe_set)
+/// and its tables.
+template <typename Policy, typename Lobes, typename T>
 LTC_SIMD_AVX2_TARGET std::size_t run_shade_avx2(const ltc_table* const* tables, const shading_light<T>& light,
-                                                const shading_points<T>& points, const shading_results<T>& out,
-                                                std::size_t count) {
-    return avx2::shade_items<Policy, T, Lobes, Cosine>(tables, light, points, out, count);
+                                                const surfaces<T>& points, const shading_results<T>& out) {
+    return avx2::shade_items<Policy, Lobes, T>(tables, light, points, out);
 }
 #endif
 
@@ -101,20 +103,19 @@ LTC_SIMD_AVX512_TARGET std::size_t run_avx512(const matrices<T>& mats, std::size
     return avx512::integrate_items<Policy, N>(mats, n, x, y, z, out, count, two_sided);
 }
 
-/// Points [0, returned) through the AVX-512 shading kernel, with the sum of the LTCs of Lobes tables.
-template <typename Policy, int Lobes, bool Cosine = false, typename T>
+/// Points [0, returned) through the AVX-512 shading kernel (as run_shade_avx2).
+template <typename Policy, typename Lobes, typename T>
 LTC_SIMD_AVX512_TARGET std::size_t run_shade_avx512(const ltc_table* const* tables, const shading_light<T>& light,
-                                                    const shading_points<T>& points, const shading_results<T>& out,
-                                                std::size_t count) {
-    return avx512::shade_items<Policy, T, Lobes, Cosine>(tables, light, points, out, count);
+                                                    const surfaces<T>& points, const shading_results<T>& out) {
+    return avx512::shade_items<Policy, Lobes, T>(tables, light, points, out);
 }
 #endif
 
-/// Points [0, returned) through the baseline shading kernel, with the sum of the LTCs of Lobes tables.
-template <typename Policy, int Lobes, bool Cosine = false, typename T>
-std::size_t run_shade_baseline(const ltc_table* const* tables, const shading_light<T>& light,
-                               const shading_points<T>& points, const shading_results<T>& out, std::size_t count) {
-    return baseline::shade_items<Policy, T, Lobes, Cosine>(tables, light, points, out, count);
+/// Points [0, returned) through the baseline shading kernel (as run_shade_avx2).
+template <typename Policy, typename Lobes, typename T>
+std::size_t run_shade_baseline(const ltc_table* const* tables, const shading_light<T>& light, const surfaces<T>& points,
+                               const shading_results<T>& out) {
+    return baseline::shade_items<Policy, Lobes, T>(tables, light, points, out);
 }
 
 #endif  // LTC_SIMD
