@@ -76,6 +76,7 @@
 #include <ltc/shading/line_light.hpp>
 #include <ltc/shading/tube_light.hpp>
 #include <ltc/shading/batch.hpp>
+#include <ltc/shading/batch_shade.hpp>
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/batch_cosine_lobe.hpp>
