@@ -15,8 +15,7 @@
 set(_header_exempt
   "^include/ltc/tables/ggx"
   "^include/ltc/shading/batch"
-  "^include/ltc/shading/detail/"
-  "^include/ltc/core/")
+  "^include/ltc/shading/detail/")
 set(_preamble_max 15)
 
 if(NOT LTC_SOURCE_DIR)

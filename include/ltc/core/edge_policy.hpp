@@ -1,6 +1,6 @@
 // ltc/core/edge_policy.hpp -- how the factor theta / sin(theta) of the edge term of eq. (11) is
 // evaluated: exactly (atan2), by float-accurate fits (polynomial, minimax_rational), by the
-// reference shader's rational fit, or by the FP16 quadratic of the production note.
+// reference shader's rational fit, or by an FP16-friendly quadratic.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -85,8 +85,8 @@ struct has_positive_branch<Policy, T, std::void_t<decltype(Policy::template posi
 /// `automatic` (minimax_rational in float, exact in double), the lower-level polygon functions
 /// (edge_integral, form_factor, vector_form_factor) to `exact`. A policy may also
 /// expose positive_branch(y), its fit of theta / sin(theta) at c = 1 - y >= 0: edge_integral_z
-/// then skips the x and y components of a x b there. Measured maximum relative errors of the
-/// factor over c in [-1, 1] are in the README and tests/test_edge_policies.cpp.
+/// then skips the x and y components of a x b there. The maximum relative errors of the factor
+/// over c in [-1, 1], in float and double: docs/precision.md and tests/test_edge_policies.cpp.
 namespace edge_policy {
 
 /// atan2(s, c) / s: correct to a few ulps at every angle.
@@ -134,10 +134,9 @@ struct minimax_rational : detail::symmetric_fit<minimax_rational> {
 /// on c in [0, 1] (22 nodes; coefficients computed in long double, with acos(1 - y) as
 /// 2 asin(sqrt(y / 2)) so that the reference is accurate near y = 0; with the coefficients rounded
 /// to double, within 2e-17 of f in exact arithmetic), extended to c < 0 by f(c) = pi / s - f(-c):
-/// accurate to double rounding (5.0 u measured, 15 u derived, against 2.7 u for atan2 / s:
-/// tests/test_edge_policies.cpp) without atan2, and for c >= 0 without a square root or a
-/// division. In float it is no better than `polynomial`. The two-lobe fit's objective uses it
-/// (ltc/fitting/fit_two_lobes.hpp), where atan2 took 26% of the time.
+/// accurate to double rounding (15 u derived; tests/test_edge_policies.cpp) without atan2, and for
+/// c >= 0 without a square root or a division. In float it is no better than `polynomial`. The
+/// two-lobe fit's objective uses it (ltc/fitting/fit_two_lobes.hpp).
 struct polynomial_double : detail::symmetric_fit<polynomial_double> {
     template <typename V>
     LTC_HOST_DEVICE LTC_INLINE static void evaluate_positive_branch(const V& y, V& f) {
@@ -190,7 +189,7 @@ struct rational {
     }
 };
 
-/// The FP16-friendly quadratic of the production note (Chinese note in the sources):
+/// An FP16-friendly quadratic, as used by half-precision production shaders:
 /// 0.33735186 c^2 - 0.89665001 c + pi / 2 for c >= 0, extended to c < 0 by
 /// pi / sqrt(1 - c^2) - f(-c). Every operation fits in half precision.
 /// Instantiable with T = _Float16 (real half-precision arithmetic; sqrt through float).

@@ -7,49 +7,11 @@
 //   float i = ltc::integrate_disk(d, centre, normal, radius, ltc::sidedness::one_sided);
 //   float j = ltc::integrate_disk_2017(d, centre, normal, radius);   // the 2017 approximation
 //
-// A disk (centre, normal, radius; in d's frame, the shading point at the origin) becomes under
-// w -> M^-1 w the ellipse c' = M^-1 centre, a' = M^-1 (r t2), b' = M^-1 (r t1), with (t1, t2,
-// normal) orthonormal (Duff et al. 2017): D's integral over the disk is the clamped cosine's
-// over that ellipse (eq. 3).
-//
-// Method. The clamped cosine's integral over a region is the z component of its vector form
-// factor, a boundary integral by Stokes' theorem (the identity behind eq. (11)'s edge sum):
-//   I = 1/(2 pi) contour (x cross dx).z / |x|^2
-// over the boundary of the part above the horizon: an elliptic arc and a chord in z = 0. The
-// chord is a straight edge: eq. (11)'s edge term, its angle (in closed form, so that it stays
-// accurate between nearly antipodal ends). The arc is integrated in closed form in the frame of
-// the cone that the ellipse subtends, where the integrand is (A + B cos th + C sin th) /
-// (P cos^2 th + Q sin^2 th): an angle plus an atan or atanh (ltc/core/detail/ellipse_cone.hpp derives
-// it). Finding that frame takes a 1D secular equation (Newton from a lower bound, 2-4 steps) and
-// a 2 x 2 SVD, in which every quantity is a sum or product of positive terms. Why not quadrature:
-// next to the disk the integrand peaks sharply and Gauss-Legendre needs adaptive subdivision to
-// reach rounding; the closed form costs the same everywhere and is exact to rounding: measured
-// (tests/test_ellipse_integral.cpp; 2e5 extreme cases against a long double evaluation) within
-// ~10 epsilon of the integral's own scale, the ellipse's angular diameter (polygons' edge terms
-// carry errors of epsilon times their angles likewise), or within the integral's sensitivity to
-// rounding its inputs where that is larger (a point within ~1e-6 of a thin ellipse's plane; one
-// within rounding of both the plane and the rim, where any value in [-1, 1] is that close: finite,
-// in range, see make_cone_axis).
-//
-// Conventions. As polygons (ltc/core/polygon.hpp): z is the normal, and results are signed:
-// positive when the boundary c + a cos phi + b sin phi, phi increasing, turns clockwise as seen
-// from the origin, i.e. when c.(a x b) > 0. A disk's boundary runs so that its integrals are
-// positive when the shading point is on the +normal side: a one-sided disk emits towards +normal
-// (apply_sidedness: max(0, signed)), a two-sided one both ways. Integrals are in [-1, 1] (units
-// of the normalized D: the fraction of D's mass over the light).
-//
-// Degenerate input never yields NaN or Inf for finite input:
-//   - radius <= 0, a zero normal, a x b = 0 (a segment), a non-finite input: 0;
-//   - the origin in the plane of an ellipse (a disk seen edge-on): 0 outside it; inside it (the
-//     shading point on the disk) the boundary is a great circle, and the results are those of a
-//     polygon in the same position: F = the plane's unit normal nu = a x b / |a x b|, and the
-//     clipped integral nu.z / 2, the mean of the one-sided limits (1 + nu.z) / 2 (the origin on
-//     the side a x b points away from) and -(1 - nu.z) / 2. A disk is tested on its own plane,
-//     before M^-1 blurs it; the 2017 approximation gives 0 there, as ltc::clipless;
-//   - an ellipse entirely below the horizon, or lying in the plane z = 0: 0;
-//   - huge or tiny coordinates: rescaled by powers of two (exact: results do not change); float
-//     geometry spanning more than 2^40 (an ellipse thinner than 1e-12 of its size or distance,
-//     a point that close to its plane) is evaluated in double; a singular M^-1 as transformed<>.
+// Conventions: as polygons (ltc/core/polygon.hpp), z the normal; results signed, in [-1, 1],
+// positive when c.(a x b) > 0; a disk's positive on its +normal side (one-sided: max(0, signed)).
+// Degenerate cases: never NaN or Inf for finite input; 0 for radius <= 0, a zero normal, a
+// segment (a x b = 0), non-finite input, an ellipse below or in the horizon plane; the shading
+// point on the disk gives a polygon's value there (integrate_ellipse_cosine).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -87,9 +49,9 @@ LTC_HOST_DEVICE inline glm::vec<3, T> axis_direction(const ellipse_frame<T>& f, 
 }  // namespace detail
 
 /// Vector form factor F = 1/(2 pi) contour (x cross dx) / |x|^2 of the unclipped ellipse
-/// c + a s + b t (s^2 + t^2 <= 1), signed by the orientation of c + a cos phi + b sin phi (file
-/// comment). F.z is the unclipped cosine integral; |F| = sin^2 sigma and the direction of F
-/// (the cone's axis) give the equivalent sphere of the 2017 approximation.
+/// c + a s + b t (s^2 + t^2 <= 1), signed by the orientation of c + a cos phi + b sin phi (as
+/// integrate_ellipse_cosine). F.z is the unclipped cosine integral; |F| = sin^2 sigma and the
+/// direction of F (the cone's axis) give the equivalent sphere of the 2017 approximation.
 template <typename T>
 LTC_HOST_DEVICE inline glm::vec<3, T> ellipse_vector_form_factor(const glm::vec<3, T>& c, const glm::vec<3, T>& a,
                                                                  const glm::vec<3, T>& b) {
@@ -103,7 +65,38 @@ LTC_HOST_DEVICE inline glm::vec<3, T> ellipse_vector_form_factor(const glm::vec<
 }
 
 /// Signed integral of max(0, z) / pi over the solid angle of the ellipse c + a s + b t
-/// (s^2 + t^2 <= 1), horizon-clipped exactly (file comment: method, sign, degenerate input).
+/// (s^2 + t^2 <= 1), horizon-clipped exactly.
+///
+/// Method. The clamped cosine's integral over a region is the z component of its vector form
+/// factor, a boundary integral by Stokes' theorem (the identity behind eq. (11)'s edge sum):
+///   I = 1/(2 pi) contour (x cross dx).z / |x|^2
+/// over the boundary of the part above the horizon: an elliptic arc and a chord in z = 0. The
+/// chord is a straight edge: eq. (11)'s edge term, its angle (in closed form, so that it stays
+/// accurate between nearly antipodal ends). The arc is integrated in closed form in the frame of
+/// the cone that the ellipse subtends, where the integrand is (A + B cos th + C sin th) /
+/// (P cos^2 th + Q sin^2 th): an angle plus an atan or atanh (ltc/core/detail/ellipse_cone.hpp derives
+/// it). Finding that frame takes a 1D secular equation (Newton from a lower bound, 2-4 steps) and
+/// a 2 x 2 SVD, in which every quantity is a sum or product of positive terms. Exact to rounding
+/// relative to the integral's own scale, the ellipse's angular diameter (polygons' edge terms
+/// carry errors of epsilon times their angles likewise), or within the integral's sensitivity to
+/// rounding its inputs where that is larger (a point very close to a thin ellipse's plane; one
+/// within rounding of both the plane and the rim, where any value in [-1, 1] is that close: finite,
+/// in range, see make_cone_axis); tests/test_ellipse_integral.cpp, docs/design_notes.md.
+///
+/// Sign: positive when the boundary c + a cos phi + b sin phi, phi increasing, turns clockwise as
+/// seen from the origin, i.e. when c.(a x b) > 0, as polygons (ltc/core/polygon.hpp); the result
+/// is in [-1, 1] (units of the normalized D: the fraction of D's mass over the light).
+///
+/// Degenerate input never yields NaN or Inf for finite input:
+///   - a x b = 0 (a segment), a non-finite input: 0;
+///   - the origin in the plane of the ellipse: 0 outside it; inside it the boundary is a great
+///     circle, and the results are those of a polygon in the same position: F = the plane's unit
+///     normal nu = a x b / |a x b|, and the clipped integral nu.z / 2, the mean of the one-sided
+///     limits (1 + nu.z) / 2 (the origin on the side a x b points away from) and -(1 - nu.z) / 2;
+///   - an ellipse entirely below the horizon, or lying in the plane z = 0: 0;
+///   - huge or tiny coordinates: rescaled by powers of two (exact: results do not change); float
+///     geometry spanning more than 2^40 (an ellipse thinner than 1e-12 of its size or distance,
+///     a point that close to its plane) is evaluated in double.
 template <typename T>
 LTC_HOST_DEVICE inline T integrate_ellipse_cosine(const glm::vec<3, T>& c, const glm::vec<3, T>& a,
                                                   const glm::vec<3, T>& b) {
@@ -138,7 +131,7 @@ LTC_HOST_DEVICE inline T ellipse_sphere_2017(const glm::vec<3, T>& c, const glm:
 }
 
 /// A disk's boundary through M^-1: c' + a' cos phi + b' sin phi, oriented so that c'.(a' x b') has
-/// the sign of det(M^-1) times that of "the origin is on the +normal side" (file comment). For
+/// the sign of det(M^-1) times that of "the origin is on the +normal side" (integrate_disk). For
 /// huge or tiny coordinates M^-1 and the disk are first rescaled by powers of two (exact).
 template <typename T>
 struct disk_ellipse {
@@ -175,7 +168,7 @@ LTC_HOST_DEVICE inline disk_ellipse<T> make_disk_ellipse(const glm::mat<3, 3, T>
     e.valid = is_finite(e.c) && is_finite(e.a) && is_finite(e.b);
     // Edge-on: decided on the disk itself (as given: n's rounding would blur it too). On the disk,
     // its image's boundary is a great circle of normal nu = a' x b' / |a' x b'|, and the mean
-    // value is that of the ellipse, nu.z / 2, signed as the disk's (file comment).
+    // value is that of the ellipse, nu.z / 2, signed as the disk's (integrate_disk).
     e.edge_on = glm::dot(centre, normal) == T(0);
     if (e.edge_on && glm::dot(centre, centre) < radius * radius)
         e.on_disk = e.det_sign * safe_normalize(glm::cross(safe_normalize(e.a), safe_normalize(e.b))).z / T(2);
@@ -187,7 +180,18 @@ LTC_HOST_DEVICE inline disk_ellipse<T> make_disk_ellipse(const glm::mat<3, 3, T>
 /// Integral of the LTC d over the disk (centre, normal, radius), in d's frame with the shading
 /// point at the origin: integrate_ellipse_cosine of its image under M^-1 (eq. 3), signed by the
 /// disk's facing (positive when the origin is on the +normal side), then made non-negative by
-/// `side`. Exact to rounding (file comment); degenerate input as the file comment lists.
+/// `side`. Exact to rounding (integrate_ellipse_cosine).
+///
+/// The disk becomes under w -> M^-1 w the ellipse c' = M^-1 centre, a' = M^-1 (r t2),
+/// b' = M^-1 (r t1), with (t1, t2, normal) orthonormal (Duff et al. 2017): D's integral over the
+/// disk is the clamped cosine's over that ellipse (eq. 3). Its boundary runs so that its integrals
+/// are positive when the shading point is on the +normal side: a one-sided disk emits towards
+/// +normal (apply_sidedness: max(0, signed)), a two-sided one both ways.
+///
+/// Degenerate input: radius <= 0, a zero normal, a non-finite input: 0; the shading point in the
+/// disk's plane (a disk seen edge-on, tested on its own plane, before M^-1 blurs it): 0 outside
+/// the disk, on it the ellipse's mean of the one-sided limits (integrate_ellipse_cosine); the
+/// ellipse's other cases as integrate_ellipse_cosine; a singular M^-1 as transformed<>.
 template <typename T, typename Policy>
 LTC_HOST_DEVICE inline T integrate_disk(const transformed<clamped_cosine<T, Policy>>& d, const glm::vec<3, T>& centre,
                                         const glm::vec<3, T>& normal, T radius, sidedness side = sidedness::two_sided) {
@@ -202,11 +206,10 @@ LTC_HOST_DEVICE inline T integrate_disk(const transformed<clamped_cosine<T, Poli
 /// disk's ellipse (exact: ellipse_vector_form_factor's), then the horizon-clipped form factor of
 /// the sphere with the same F (ltc::clipless::sphere_form_factor, f = |F|, cos omega = F's
 /// elevation) in place of the ellipse's own clipping. Equal to integrate_disk while that sphere
-/// lies above the horizon (cos omega >= sqrt(f): both are F.z, bit for bit). Elsewhere, measured
-/// over random GGX disks (tests/test_disk_light.cpp): above the horizon under a sphere that dips
-/// below it, always more than F.z, by up to ~2x; across the horizon, errors of 1% of |F| on
-/// average, 15-20% at worst; below it, up to 2-3% of |F| where the sphere pokes above. Signed and
-/// made non-negative as integrate_disk; 0 when the shading point is in the disk's plane.
+/// lies above the horizon (cos omega >= sqrt(f): both are F.z, bit for bit); elsewhere an
+/// approximation (its errors over random GGX disks: tests/test_disk_light.cpp,
+/// docs/design_notes.md). Signed and made non-negative as integrate_disk; 0 when the shading point
+/// is in the disk's plane, as ltc::clipless.
 template <typename T, typename Policy>
 LTC_HOST_DEVICE inline T integrate_disk_2017(const transformed<clamped_cosine<T, Policy>>& d,
                                              const glm::vec<3, T>& centre, const glm::vec<3, T>& normal, T radius,
@@ -219,9 +222,8 @@ LTC_HOST_DEVICE inline T integrate_disk_2017(const transformed<clamped_cosine<T,
 
 /// The disk as a regular n_edges-gon of the same area (circumradius r sqrt(2 pi / (n sin(2 pi /
 /// n)))), oriented as the disk, through d's polygon integral (eq. 11), for comparison with
-/// integrate_disk. Measured (tests/test_disk_light.cpp): the difference falls as n^-4 when the
-/// horizon does not cut the disk's image (equal areas cancel the n^-2 term), as n^-2.7 or faster
-/// when it does (the clipped corners). n_edges < 3 gives 0; vertices are made on the fly.
+/// integrate_disk (the difference's convergence in n: tests/test_disk_light.cpp,
+/// docs/design_notes.md). n_edges < 3 gives 0; vertices are made on the fly.
 template <typename T, typename Policy>
 inline T integrate_disk_polygon(const transformed<clamped_cosine<T, Policy>>& d, const glm::vec<3, T>& centre,
                                 const glm::vec<3, T>& normal, T radius, std::size_t n_edges,

@@ -1,56 +1,17 @@
 // ltc/core/line_integral.hpp -- line (tube) lights: the integral of the clamped cosine, and of a
 // linearly transformed cosine (eq. 1), over a thin cylinder around the segment p1-p2, per unit of
 // the cylinder's diameter. Via Heitz and Hill, "Real-Time Line- and Disk-Light Shading with
-// Linearly Transformed Cosines" (SIGGRAPH 2017 course); the derivation below is our own.
+// Linearly Transformed Cosines" (SIGGRAPH 2017 course); the derivation (integrate_line_cosine,
+// integrate_line) is our own.
 //
 //   float f = ltc::integrate_line_cosine(p1, p2);  // D_o = max(0, z) / pi, eq. (L1)-(L2)
 //   float s = ltc::integrate_line(d, p1, p2);      // d: transformed<clamped_cosine<float>>, (L3)
 //   // a tube of radiance L and radius r << its distance: L * 2r * s (plus O(r^2))
 //
-// Derivation. Shading point at the origin, axis through p1 and p2 at distance d from it. A
-// cylinder of radius r seen from the origin is 2r/|x| wide at its axis point x (across the plane
-// of the origin and the axis), and an axis element dl spans dl sin(phi)/|x| along that plane,
-// phi the angle between the axis and x: sin(phi) = d/|x|. Hence dw = 2r d/|x|^3 dl + O(r^2) and
-//   I_line = lim_{r->0} (1/2r) int_cylinder D_o(w) dw = int_{p1}^{p2} D_o(x/|x|) d/|x|^3 dl.  (L1)
-// With the foot point d n of the origin on the axis (n unit), the tangent t, x = d n + l t and
-// l = d tan(theta) (theta: the angle of x from n), D_o(x/|x|) = (cos(theta) n.z + sin(theta) t.z)/pi:
-//   I_line = 1/(pi d) int cos(theta) x^.z dtheta
-//          = 1/(2 pi d) [n.z (theta + sin(theta) cos(theta)) + t.z sin^2(theta)]_{theta_a}^{theta_b}  (L2)
-// (in l: the antiderivatives d int (d^2 + l^2)^-2 dl and d int l (d^2 + l^2)^-2 dl, the course's
-// Fpo and Fwt). With D = theta_b - theta_a and S = theta_a + theta_b the bracket is
-// n.z K + t.z sin(D) sin(S), K = (D - sin D) + sin(D) (1 + cos S): two non-negative terms, so K
-// keeps its relative accuracy where the segment points at the origin (cos S -> -1) and the
-// endpoint terms of (L2) would cancel. For endpoints a, b at l_a < l_b, L = l_b - l_a:
-//   sin D = d L / (|a| |b|),  D = atan2(d L, d^2 + l_a l_b),  sin S = d (l_a + l_b) / (|a| |b|),
-//   1 + cos S = (d/|a| + d/|b|)^2 / (1 + cos D)       if cos D >= 0,
-//             = (|a| |b| + d^2 - l_a l_b) / (|a| |b|)  otherwise (then l_a l_b < 0),
-// sums of positive terms; d L = |a x (b - a)| (no cancellation for nearly collinear segments).
-// D itself comes from sin D and cos D through the clamped cosine's edge policy (edge_policy.hpp:
-// atan2 in double, the float-accurate fit of theta / sin(theta) in float), D - sin D from a series
-// where it cancels.
-// Horizon: x.z is linear along the axis, so clipping to z >= 0 moves an end along the same line
-// (d, n and t unchanged): exact.
-//
-// LTC (L3). D integrates over the cylinder as D_o over its image under w -> M^-1 w / |M^-1 w|
-// (eq. 1-3). The cylinder's rays are those within r/|x| of the plane of the origin and the segment
-// (unit normal m): |w.m| <= r/|x| to first order. Since m.y = (M^T m).(M^-1 y), M^-1 maps that
-// plane to the one of normal M^T m and divides distances from it by |M^T m|: the image is the
-// same band about a thin cylinder of radius r/|M^T m| around M^-1 p1 - M^-1 p2. So, exactly in the
-// limit r -> 0 (the only approximation, as in (L1)), with a width factor constant along the segment,
-//   I_line,D(p1, p2) = I_line(M^-1 p1, M^-1 p2) / |M^T m|,
-//   1/|M^T m| = |det M^-1| |p1 x p2| / |M^-1 p1 x M^-1 p2|                                     (L3)
-// by the cofactor identity (A u) x (A v) = det(A) A^-T (u x v) with A = M^-1.
-//
-// Semantics: >= 0, in units of 1/length (I(s p1, s p2) = I(p1, p2) / s), symmetric in p1 and p2; a
-// tube glows all around, so there is no sidedness. Degenerate input, never NaN or Inf when finite:
-//   - p1 = p2, or an axis through the origin (the segment through, ending at, or pointing at the
-//     shading point: seen edge-on): 0. For a segment pointing at the origin that is the limit
-//     (the integral vanishes like d); one passing through it diverges like 1/d as d -> 0 and 0 is
-//     a convention, as for polygons with a vertex at the shading point;
-//   - a segment below or in the horizon plane: 0;
-//   - values beyond the largest finite one (I ~ 1/(2d): a segment passing within about half the
-//     reciprocal of it from the origin) saturate to it;
-//   - huge or tiny (even subnormal) coordinates and M^-1 entries are rescaled by powers of two.
+// Conventions: shading point at the origin, z the normal; >= 0, in units of 1/length, symmetric
+// in p1 and p2, no sidedness (a tube glows all around); horizon-clipped exactly. Degenerate
+// cases: never NaN or Inf for finite input; 0 for p1 = p2, an axis through the origin, a segment
+// below or in the horizon plane; saturated at the largest finite value (integrate_line_cosine).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -237,8 +198,43 @@ LTC_HOST_DEVICE LTC_NOINLINE T line_ltc_rescaled(const glm::mat<3, 3, T>& m_inv,
 /// (L1)-(L2): the integral of D_o = max(0, z)/pi over a thin cylinder around the segment p1-p2
 /// (shading point at the origin, z the shading normal), divided by the cylinder's diameter, in the
 /// limit of zero radius: int_segment D_o(x/|x|) d/|x|^3 dl, d the distance from the origin to the
-/// segment's line. Clipped to the horizon exactly; >= 0; units of 1/length; see the header comment
-/// for degenerate input. Policy: how the angle D is evaluated, as for the polygon integrals.
+/// segment's line. Clipped to the horizon exactly; >= 0; units of 1/length; degenerate input
+/// below. Policy: how the angle D is evaluated, as for the polygon integrals.
+///
+/// Derivation. Shading point at the origin, axis through p1 and p2 at distance d from it. A
+/// cylinder of radius r seen from the origin is 2r/|x| wide at its axis point x (across the plane
+/// of the origin and the axis), and an axis element dl spans dl sin(phi)/|x| along that plane,
+/// phi the angle between the axis and x: sin(phi) = d/|x|. Hence dw = 2r d/|x|^3 dl + O(r^2) and
+///   I_line = lim_{r->0} (1/2r) int_cylinder D_o(w) dw = int_{p1}^{p2} D_o(x/|x|) d/|x|^3 dl.  (L1)
+/// With the foot point d n of the origin on the axis (n unit), the tangent t, x = d n + l t and
+/// l = d tan(theta) (theta: the angle of x from n), D_o(x/|x|) = (cos(theta) n.z + sin(theta) t.z)/pi:
+///   I_line = 1/(pi d) int cos(theta) x^.z dtheta
+///          = 1/(2 pi d) [n.z (theta + sin(theta) cos(theta)) + t.z sin^2(theta)]_{theta_a}^{theta_b}  (L2)
+/// (in l: the antiderivatives d int (d^2 + l^2)^-2 dl and d int l (d^2 + l^2)^-2 dl, the course's
+/// Fpo and Fwt). With D = theta_b - theta_a and S = theta_a + theta_b the bracket is
+/// n.z K + t.z sin(D) sin(S), K = (D - sin D) + sin(D) (1 + cos S): two non-negative terms, so K
+/// keeps its relative accuracy where the segment points at the origin (cos S -> -1) and the
+/// endpoint terms of (L2) would cancel. For endpoints a, b at l_a < l_b, L = l_b - l_a:
+///   sin D = d L / (|a| |b|),  D = atan2(d L, d^2 + l_a l_b),  sin S = d (l_a + l_b) / (|a| |b|),
+///   1 + cos S = (d/|a| + d/|b|)^2 / (1 + cos D)       if cos D >= 0,
+///             = (|a| |b| + d^2 - l_a l_b) / (|a| |b|)  otherwise (then l_a l_b < 0),
+/// sums of positive terms; d L = |a x (b - a)| (no cancellation for nearly collinear segments).
+/// D itself comes from sin D and cos D through the clamped cosine's edge policy (edge_policy.hpp:
+/// atan2 in double, the float-accurate fit of theta / sin(theta) in float), D - sin D from a series
+/// where it cancels.
+/// Horizon: x.z is linear along the axis, so clipping to z >= 0 moves an end along the same line
+/// (d, n and t unchanged): exact.
+///
+/// Semantics: >= 0, in units of 1/length (I(s p1, s p2) = I(p1, p2) / s), symmetric in p1 and p2; a
+/// tube glows all around, so there is no sidedness. Degenerate input, never NaN or Inf when finite:
+///   - p1 = p2, or an axis through the origin (the segment through, ending at, or pointing at the
+///     shading point: seen edge-on): 0. For a segment pointing at the origin that is the limit
+///     (the integral vanishes like d); one passing through it diverges like 1/d as d -> 0 and 0 is
+///     a convention, as for polygons with a vertex at the shading point;
+///   - a segment below or in the horizon plane: 0;
+///   - values beyond the largest finite one (I ~ 1/(2d): a segment passing within about half the
+///     reciprocal of it from the origin) saturate to it;
+///   - huge or tiny (even subnormal) coordinates and M^-1 entries are rescaled by powers of two.
 template <typename T, typename Policy = edge_policy::automatic>
 LTC_HOST_DEVICE inline T integrate_line_cosine(const glm::vec<3, T>& p1, const glm::vec<3, T>& p2) {
     using P = edge_policy::resolve_t<Policy, T>;
@@ -249,6 +245,16 @@ LTC_HOST_DEVICE inline T integrate_line_cosine(const glm::vec<3, T>& p1, const g
 /// (L3): the same integral for the LTC distribution D of eq. (1): the width factor
 /// 1/|M^T m| = |det M^-1| |p1 x p2| / |M^-1 p1 x M^-1 p2| times integrate_line_cosine(M^-1 p1,
 /// M^-1 p2). Exact in the thin limit; uses only M^-1 and its determinant.
+///
+/// Derivation of (L3). D integrates over the cylinder as D_o over its image under w -> M^-1 w / |M^-1 w|
+/// (eq. 1-3). The cylinder's rays are those within r/|x| of the plane of the origin and the segment
+/// (unit normal m): |w.m| <= r/|x| to first order. Since m.y = (M^T m).(M^-1 y), M^-1 maps that
+/// plane to the one of normal M^T m and divides distances from it by |M^T m|: the image is the
+/// same band about a thin cylinder of radius r/|M^T m| around M^-1 p1 - M^-1 p2. So, exactly in the
+/// limit r -> 0 (the only approximation, as in (L1)), with a width factor constant along the segment,
+///   I_line,D(p1, p2) = I_line(M^-1 p1, M^-1 p2) / |M^T m|,
+///   1/|M^T m| = |det M^-1| |p1 x p2| / |M^-1 p1 x M^-1 p2|                                     (L3)
+/// by the cofactor identity (A u) x (A v) = det(A) A^-T (u x v) with A = M^-1.
 template <typename T, typename Policy>
 LTC_HOST_DEVICE inline T integrate_line(const transformed<clamped_cosine<T, Policy>>& d, const glm::vec<3, T>& p1,
                                         const glm::vec<3, T>& p2) {

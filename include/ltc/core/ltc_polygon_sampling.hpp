@@ -1,22 +1,16 @@
 // ltc/core/ltc_polygon_sampling.hpp -- sampling a Linearly Transformed Cosine restricted to a
 // polygon: directions w in P with density D(w) / I_D, I_D = int_P D (eq. 3). Exact, through the
 // projected solid angle sampler (ltc/core/projected_solid_angle_sampling.hpp) in the cosine's
-// space:
-//   w_o ~ max(0, w_o.z) / E over M^-1 P (clipped),   E = pi I_D;
-//   w = M w_o / |M w_o|,   density (w_o.z / E) |M^-1| / |M^-1 w|^3 = D(w) pi / E = D(w) / I_D
-// (eq. 1 and its Jacobian, paper appendix A). With the polygon's integral known in closed form,
-// an estimate sum f / p over these samples of any f close to D has variance close to zero:
-// the stochastic part of the ratio estimator (ltc/shading/shadowed_polygon_light.hpp).
+// space (eq. 1 and its Jacobian, paper appendix A): the stochastic part of the ratio estimator
+// (ltc/shading/shadowed_polygon_light.hpp).
 //
 //   ltc::ltc_polygon_sampler<float> s(d, vertices, n);   // d: transformed<clamped_cosine<float>>
 //   ltc::polygon_sample<float> x = s.sample(u);           // x.pdf = d.eval(x.direction) / s.integral()
 //
-// The polygon: convex and planar, at most max_vertices (MaxVertices, 8 by default) vertices: a
-// precondition of the constructor (device code: it cannot throw), which checked() enforces by
-// throwing ltc::invalid_polygon (ltc/core/invalid_polygon.hpp). See the projected sampler for the
-// degenerate cases, which give an empty() sampler. M^-1 P is computed in T, and once more
-// in the projected sampler's wider type where that sampler widens its fan (a tiny or grazing
-// M^-1 P in float): then I_D carries no rounding of M^-1 p_i in T.
+// Conventions: vertices in D's frame; a convex planar polygon of at most max_vertices
+// (MaxVertices, 8 by default) vertices: a precondition of the constructor, which checked()
+// enforces by throwing ltc::invalid_polygon. Degenerate cases: those of the projected sampler,
+// which give an empty() sampler.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -32,7 +26,19 @@
 
 LTC_NAMESPACE_BEGIN
 
-/// D restricted to a convex polygon, for D = transformed<clamped_cosine<T, Policy>> (file comment).
+/// D restricted to a convex polygon, for D = transformed<clamped_cosine<T, Policy>>: the
+/// projected solid angle sampler in the cosine's space,
+///   w_o ~ max(0, w_o.z) / E over M^-1 P (clipped),   E = pi I_D;
+///   w = M w_o / |M w_o|,   density (w_o.z / E) |M^-1| / |M^-1 w|^3 = D(w) pi / E = D(w) / I_D
+/// (eq. 1 and its Jacobian, paper appendix A). With the polygon's integral known in closed form,
+/// an estimate sum f / p over these samples of any f close to D has variance close to zero.
+///
+/// The polygon: convex and planar, at most max_vertices vertices: a precondition of the
+/// constructor (device code: it cannot throw), which checked() enforces by throwing
+/// ltc::invalid_polygon (ltc/core/invalid_polygon.hpp). See the projected sampler for the
+/// degenerate cases, which give an empty() sampler. M^-1 P is computed in T, and once more
+/// in the projected sampler's wider type where that sampler widens its fan (a tiny or grazing
+/// M^-1 P in float): then I_D carries no rounding of M^-1 p_i in T.
 template <typename T, std::size_t MaxVertices = 8>
 class ltc_polygon_sampler {
   public:

@@ -1,6 +1,5 @@
-// ltc/core/polygon.hpp -- exact integrals over spherical polygons, and horizon clipping.
-//
-// The polygon machinery of the library, usable on its own:
+// ltc/core/polygon.hpp -- exact integrals over spherical polygons, and horizon clipping: the
+// polygon machinery of the library, usable on its own (conventions in full below):
 //   - clip_to_horizon:        Sutherland-Hodgman clipping of an n-gon to the half-space z >= 0;
 //   - edge_integral:          the exact edge term of the paper's eq. (11) (Baum et al. 1989);
 //   - vector_form_factor:     F = 1/(2 pi) sum of edge terms, the "vector irradiance" of the
@@ -9,12 +8,12 @@
 //                             signed, one-sided (max(0, sum)) or two-sided (abs(sum));
 //   - solid_angle / clipped_solid_angle: signed solid angles (Van Oosterom & Strackee 1983).
 //
-// Speed. The clamped-cosine integral of a quad (the common light shape) takes a path of its own:
-// clipped before normalization by a switch on the vertices above the horizon, as the paper's
-// shader does, then five edge terms without a branch on the vertex count; other polygons, and
-// the quads whose degenerate cases need care, take a streaming clipper on unit vertices. The
-// edge policies (edge_policy) trade the exact atan2 for float-accurate fits.
-//
+// Conventions: n >= 3 vertices (any scale) of a simple planar polygon seen from the shading point
+// at the origin, z the normal; signed results positive when the vertices turn clockwise as seen
+// from the origin. Degenerate cases: never NaN or Inf for finite vertices; 0 for n < 3, a vertex
+// at the origin, or a polygon below the horizon (clipped integrals).
+#pragma once
+
 // Conventions. A polygon is given by n >= 3 vertices (any scale, not necessarily unit) of a
 // simple planar polygon, seen from the shading point at the origin; z is the normal of the
 // shading frame. Signed results are positive when the vertices turn clockwise as seen from the
@@ -30,7 +29,12 @@
 //   - repeated or collinear vertices: zero-length edges contribute exactly 0;
 //   - an edge whose line passes through the origin has no defined great circle: it contributes 0;
 //   - a polygon entirely below the horizon clips to nothing: clipped integrals are 0.
-#pragma once
+//
+// Speed. The clamped-cosine integral of a quad (the common light shape) takes a path of its own:
+// clipped before normalization by a switch on the vertices above the horizon, as the paper's
+// shader does, then five edge terms without a branch on the vertex count; other polygons, and
+// the quads whose degenerate cases need care, take a streaming clipper on unit vertices. The
+// edge policies (edge_policy) trade the exact atan2 for float-accurate fits.
 
 #include <ltc/core/edge_integral.hpp>    // edge_integral, edge_integral_z
 #include <ltc/core/edge_policy.hpp>      // edge_policy::exact, minimax_rational, polynomial, ...

@@ -1,7 +1,7 @@
 // ltc/core/polygon_area_sampling.hpp -- uniform sampling of a planar polygon by area, the light
 // sampling of most renderers ("light-area sampling"), and its density in solid angle as seen from
 // a point: p_omega = |x - o|^2 / (A |cos theta_x|) (the change of measure dA -> d omega, e.g.
-// Veach 1997 eq. 8.10). The baseline that the exact LTC sampler is measured against.
+// Veach 1997 eq. 8.10). The baseline that the exact LTC sampler is compared with (docs/shadows.md).
 //
 //   ltc::polygon_area_sampler<float> light(vertices, n);
 //   glm::vec3 x = light.sample(u);                         // uniform on the polygon

@@ -2,45 +2,16 @@
 // to a spherical polygon: directions with density w.z / E over the part of the polygon above the
 // horizon, E = int_P max(0, w.z) dw = pi times the form factor of the paper's eq. (11). This is
 // what Peters ("BRDF Importance Sampling for Polygonal Lights", SIGGRAPH 2021) calls projected
-// solid angle sampling; the method here is derived in this library (not Peters' ellipse
-// construction), and any LTC restricted to a polygon is sampled through it
-// (ltc/core/ltc_polygon_sampling.hpp).
+// solid angle sampling; the method (projected_polygon_sampler) is derived in this library, and any
+// LTC restricted to a polygon is sampled through it (ltc/core/ltc_polygon_sampling.hpp).
 //
 //   ltc::projected_polygon_sampler<float> s(vertices, n);   // shading frame, z = normal
 //   ltc::polygon_sample<float> x = s.sample(u);               // x.pdf = x.direction.z / E
 //   glm::vec2 v = s.invert(x.direction);                      // == u up to rounding
 //
-// Method. The polygon is clipped to z >= 0 (Sutherland-Hodgman, as eq. 11 requires) and cut
-// into a fan of triangles from its first vertex; u.x picks a triangle with probability
-// proportional to its projected solid angle (Lambert's formula, the edge terms of eq. 11) and is
-// rescaled to [0, 1) inside it. In the triangle (ltc/core/detail/projected_triangle.hpp), u.x fixes
-// the great circle through the apex that cuts off the fraction u.x of its projected solid angle
-// (closed form, one Newton solve in the angle at the apex: its derivative is a closed form too),
-// and u.y the point along that arc (the arc's cosine-weighted length, a second Newton solve).
-// Both solves run inside bisection brackets to about 4 epsilon of the target, so the
-// distribution is exact to rounding and invert() (closed forms, no solve) is its inverse.
-//
-// Accuracy. A fan triangle's projected solid angle is a sum of edge terms that cancel: for a
-// triangle of angular size h it is ~h^2 from terms of size h, for a sliver of height d above the
-// horizon ~d^2 from terms of its width, and F's relative error is epsilon times their ratio
-// (projected_triangle::condition). Where that exceeds 2^-12 in some fan triangle (in float: a
-// triangle under ~1e-3 rad, or a sliver within ~0.01 rad of the horizon), the whole fan is
-// rebuilt in the wider type Wide (double for float; Wide = T opts out, e.g. on a GPU) from the
-// input vertices: converted exactly, then clipped and normalized in Wide (and, for
-// ltc_polygon_sampler, multiplied by M^-1 in Wide), since T's unit vertices alone are off by
-// epsilon, which is epsilon / h of the size h of a tiny polygon. The distribution then stays
-// w.z / E to ~2^-12 or better in float (E itself is the rounding to T of its value in Wide, for
-// polygons of the size Wide resolves) and to rounding in double; pdf()'s great circles are
-// those of the unit vertices in Wide, rounded to T. (In
-// float without it, a quad clipped to 0.001 rad above the horizon put 72% of its samples in a
-// sixteenth of its area; the tests found it.)
-//
-// Preconditions and degenerate input. A convex planar polygon (light polygons are), any scale,
-// either winding, at most max_vertices (MaxVertices, 8 by default) vertices: checked() throws
-// ltc::invalid_polygon above it. n < 3, n > max_vertices, a vertex at the origin or a polygon
-// wholly below the horizon (or within rounding of it) give an empty() sampler:
-// projected_solid_angle() 0, pdf() 0, and sample() the normal (0, 0, 1) with pdf 0; every sample
-// of a sampler that is not empty() has pdf() > 0, the pdf it carries.
+// Conventions: a convex planar polygon, any scale, either winding, at most max_vertices (8 by
+// default) vertices (checked() throws ltc::invalid_polygon). Degenerate cases: n < 3, a vertex at
+// the origin or a polygon below the horizon give an empty() sampler (pdf 0 everywhere).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -130,7 +101,37 @@ struct no_fan {};
 
 }  // namespace detail
 
-/// Sampling of w.z over a convex spherical polygon clipped to the horizon (file comment).
+/// Sampling of w.z over a convex spherical polygon clipped to the horizon.
+///
+/// Method. The polygon is clipped to z >= 0 (Sutherland-Hodgman, as eq. 11 requires) and cut
+/// into a fan of triangles from its first vertex; u.x picks a triangle with probability
+/// proportional to its projected solid angle (Lambert's formula, the edge terms of eq. 11) and is
+/// rescaled to [0, 1) inside it. In the triangle (ltc/core/detail/projected_triangle.hpp), u.x fixes
+/// the great circle through the apex that cuts off the fraction u.x of its projected solid angle
+/// (closed form, one Newton solve in the angle at the apex: its derivative is a closed form too),
+/// and u.y the point along that arc (the arc's cosine-weighted length, a second Newton solve).
+/// Both solves run inside bisection brackets to about 4 epsilon of the target, so the
+/// distribution is exact to rounding and invert() (closed forms, no solve) is its inverse.
+///
+/// Accuracy. A fan triangle's projected solid angle is a sum of edge terms that cancel: for a
+/// triangle of angular size h it is ~h^2 from terms of size h, for a sliver of height d above the
+/// horizon ~d^2 from terms of its width, and F's relative error is epsilon times their ratio
+/// (projected_triangle::condition). Where that exceeds 2^-12 in some fan triangle (in float: a
+/// triangle under ~1e-3 rad, or a sliver within ~0.01 rad of the horizon), the whole fan is
+/// rebuilt in the wider type Wide (double for float; Wide = T opts out, e.g. on a GPU) from the
+/// input vertices: converted exactly, then clipped and normalized in Wide (and, for
+/// ltc_polygon_sampler, multiplied by M^-1 in Wide), since T's unit vertices alone are off by
+/// epsilon, which is epsilon / h of the size h of a tiny polygon. The distribution then stays
+/// w.z / E to ~2^-12 or better in float (E itself is the rounding to T of its value in Wide, for
+/// polygons of the size Wide resolves) and to rounding in double; pdf()'s great circles are
+/// those of the unit vertices in Wide, rounded to T.
+///
+/// Preconditions and degenerate input. A convex planar polygon (light polygons are), any scale,
+/// either winding, at most max_vertices (MaxVertices, 8 by default) vertices: checked() throws
+/// ltc::invalid_polygon above it. n < 3, n > max_vertices, a vertex at the origin or a polygon
+/// wholly below the horizon (or within rounding of it) give an empty() sampler:
+/// projected_solid_angle() 0, pdf() 0, and sample() the normal (0, 0, 1) with pdf 0; every sample
+/// of a sampler that is not empty() has pdf() > 0, the pdf it carries.
 template <typename T, std::size_t MaxVertices = 8, typename Wide = detail::wider_t<T>>
 class projected_polygon_sampler {
   public:
@@ -151,7 +152,7 @@ class projected_polygon_sampler {
 
     /// The polygon m_inv raw[0..n) (ltc_polygon_sampler's M^-1 P), given also as vertices[i], the
     /// product evaluated in T (up to a positive factor each): the fan in T is built from vertices,
-    /// a fan in Wide recomputes the product in Wide (file comment).
+    /// a fan in Wide recomputes the product in Wide (the class comment's Accuracy).
     LTC_HOST_DEVICE projected_polygon_sampler(const vec3* vertices, std::size_t n, const glm::mat<3, 3, T>& m_inv,
                                               const vec3* raw) {
         init(vertices, n, &m_inv, raw);
@@ -170,7 +171,7 @@ class projected_polygon_sampler {
     /// E = int_P max(0, w.z) dw (pi times eq. 11's clipped form factor).
     LTC_HOST_DEVICE T projected_solid_angle() const { return total_; }
 
-    /// Whether the fan is evaluated in Wide (file comment).
+    /// Whether the fan is evaluated in Wide (the class comment's Accuracy).
     LTC_HOST_DEVICE bool widened() const { return wide_; }
 
     /// A direction with density direction.z / E in the polygon, for u in [0, 1]^2. The returned

@@ -46,7 +46,7 @@ LTC_HOST_DEVICE LTC_INLINE bool in_range_all(T first, Ts... rest) {
 /// runs of vertices above the horizon (only a non-convex quad has them). Vertices on the plane
 /// z = 0 count as above, as in clip_to_horizon. For float and the symmetric fits
 /// (quad_on_lanes) the lanes of quad_lanes.hpp compute the sum instead, with hand-backs of their
-/// own (that file's comment).
+/// own (quad_sum there).
 template <typename T, typename Policy, typename Vertices>
 LTC_HOST_DEVICE LTC_INLINE bool quad_form_factor(const Vertices& v, T& sum) {
     using vec3 = glm::vec<3, T>;

@@ -3,17 +3,12 @@
 // diffusion of Monte Carlo sampling error via hierarchical ordering of pixels", SIGGRAPH Asia
 // 2020; the shuffle and scrambling of Burley, "Practical Hash-based Owen Scrambling", JCGT 2020).
 //
-// Pixel (x, y) gets the point of index shuffle(morton(x, y)) of Sobol's first two dimensions (a
-// (0, 2)-sequence in base 2), each coordinate Owen-scrambled; shuffle is an Owen scrambling of the
-// index. An aligned 2^k x 2^k block of pixels has 4^k consecutive Morton codes, which the shuffle
-// maps to another 4^k consecutive, aligned indices: a (0, 2k, 2)-net, which the scrambling keeps
-// (one point in each of the block's 4^k elementary intervals [a 2^-i, (a + 1) 2^-i) x
-// [b 2^-j, (b + 1) 2^-j), i + j = 2k; in float, whose points keep 24 bits, for k <= 12). Each
-// pixel's point is uniform over [0, 1)^2 over the seeds, so a Monte Carlo sum that takes it as
-// its uniform shift (all of it, not a part: a shift that covers part of a lattice's period is
-// biased) keeps its expectation; a filter that averages neighbouring pixels' estimates then averages stratified
-// samples, whose errors partly cancel (white-noise points: they add). Used as the shadowed
-// shading's lattice rotation: shadow_options::stratified_rotation.
+//   glm::vec2 u = ltc::screen_point(x, y, image_seed);   // in [0, 1)^2
+//
+// Conventions: each pixel's point is uniform over [0, 1)^2 over the seeds; an aligned 2^k x 2^k
+// block of pixels holds a (0, 2k, 2)-net (float: k <= 12), whose errors partly cancel in a filter
+// over neighbouring pixels. Used as the shadowed shading's lattice rotation:
+// shadow_options::stratified_rotation.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -90,7 +85,18 @@ LTC_HOST_DEVICE LTC_INLINE std::uint32_t sobol_second_reversed(std::uint32_t ind
 }  // namespace detail
 
 /// The point of pixel (x, y) (their 16 low bits: the pattern repeats every 65536 pixels) for the
-/// random word `seed` (one per image and per stream of points; file comment): in [0, 1)^2.
+/// random word `seed` (one per image and per stream of points): in [0, 1)^2.
+///
+/// Pixel (x, y) gets the point of index shuffle(morton(x, y)) of Sobol's first two dimensions (a
+/// (0, 2)-sequence in base 2), each coordinate Owen-scrambled; shuffle is an Owen scrambling of the
+/// index. An aligned 2^k x 2^k block of pixels has 4^k consecutive Morton codes, which the shuffle
+/// maps to another 4^k consecutive, aligned indices: a (0, 2k, 2)-net, which the scrambling keeps
+/// (one point in each of the block's 4^k elementary intervals [a 2^-i, (a + 1) 2^-i) x
+/// [b 2^-j, (b + 1) 2^-j), i + j = 2k; in float, whose points keep 24 bits, for k <= 12). Each
+/// pixel's point is uniform over [0, 1)^2 over the seeds, so a Monte Carlo sum that takes it as
+/// its uniform shift (all of it, not a part: a shift that covers part of a lattice's period is
+/// biased) keeps its expectation; a filter that averages neighbouring pixels' estimates then
+/// averages stratified samples, whose errors partly cancel (white-noise points: they add).
 template <typename T = float>
 LTC_HOST_DEVICE LTC_INLINE glm::vec<2, T> screen_point(std::uint32_t x, std::uint32_t y, std::uint64_t seed) {
     const std::uint32_t index = detail::owen_scramble(detail::morton_code(x, y), static_cast<std::uint32_t>(seed));

@@ -1,6 +1,7 @@
 // ltc/core/spherical_polygon_sampling.hpp -- uniform sampling in solid angle of a convex planar
 // polygon seen from the origin, as a sampler trio (sample / pdf / invert) for host and device
-// code (fixed capacity, no heap, no exceptions), in float or double.
+// code (fixed capacity, no heap, no exceptions), in float or double: a fan of triangles, each
+// sampled by Arvo's method (ltc/core/spherical_triangle_sampling.hpp).
 //
 //   const ltc::spherical_polygon_sampler<float> s(vertices, n);   // n <= max_vertices (8), any scale and winding
 //   glm::vec3 w = s.sample(u);    // u in [0, 1)^2; density s.pdf(w) = 1 / s.solid_angle() inside
@@ -9,23 +10,8 @@
 // Precondition: the polygon is convex and planar, and its plane misses the origin (a polygon
 // light seen from a shading point in front of or behind it). The spherical polygon is then convex
 // and lies in an open hemisphere. (Non-convex polygons: ltc::ground_truth::spherical_polygon.)
-//
-// The polygon is a fan of triangles around vertex 0 (v_0, v_k, v_k+1), k = 1 .. n-2, each sampled
-// by Arvo's method (ltc/core/spherical_triangle_sampling.hpp) as (a, b, c) = (v_k, v_0, v_k+1):
-// then u.x = 0 is the edge v_0 v_1, u.x = 1 the edge v_n-1 v_0, the diagonal v_0 v_k+1 is where
-// triangle k ends and k+1 begins, and u.y = 0 is v_0; u.x picks triangle k with probability
-// Omega_k / Omega (Van Oosterom and Strackee 1983) and is rescaled into [0, 1] for it, so the
-// mapping [0, 1)^2 -> polygon is continuous and one 2D sample keeps its stratification.
-//
-// Accuracy. The unit vertices in T are each off by ~epsilon, which moves the solid angle of a
-// fan triangle by ~epsilon times its perimeter: relative to the solid angle, epsilon / h for a
-// polygon of size h (or a sliver of width h). Where the fan's perimeter times epsilon exceeds
-// 2^-12 of the solid angle (in float: polygons under ~2e-3 rad across, slivers under ~1e-3 rad
-// wide), the sampler is rebuilt in the wider type Wide (double for float; Wide = T opts out,
-// e.g. on a GPU) from the input vertices, converted exactly and normalized in Wide: sample() and
-// invert() run in Wide, and solid_angle() is the rounding to T of the value in Wide (for polygons
-// of the size Wide resolves). pdf() is 1 / solid_angle() inside the great circles of the edges,
-// with a margin of the samples' rounding (pdf()), so that no sample has pdf 0.
+// Degenerate cases: n < 3, n > max_vertices, a vertex at the origin, non-finite vertices or zero
+// solid angle give an empty() sampler (pdf() 0).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -49,8 +35,18 @@ struct no_wide_sampler {};
 }  // namespace detail
 
 /// Uniform sampling in solid angle of a convex planar polygon of at most MaxVertices vertices,
-/// seen from the origin (file comment), rebuilt in Wide where T's rounding of the unit vertices
-/// would move its solid angle by more than 2^-12 (Wide = T opts out).
+/// seen from the origin, rebuilt in Wide where T's rounding of the unit vertices would move its
+/// solid angle by more than 2^-12 (Wide = T opts out).
+///
+/// Accuracy. The unit vertices in T are each off by ~epsilon, which moves the solid angle of a
+/// fan triangle by ~epsilon times its perimeter: relative to the solid angle, epsilon / h for a
+/// polygon of size h (or a sliver of width h). Where the fan's perimeter times epsilon exceeds
+/// 2^-12 of the solid angle (in float: polygons under ~2e-3 rad across, slivers under ~1e-3 rad
+/// wide), the sampler is rebuilt in the wider type Wide (double for float; Wide = T opts out,
+/// e.g. on a GPU) from the input vertices, converted exactly and normalized in Wide: sample() and
+/// invert() run in Wide, and solid_angle() is the rounding to T of the value in Wide (for polygons
+/// of the size Wide resolves). pdf() is 1 / solid_angle() inside the great circles of the edges,
+/// with a margin of the samples' rounding (pdf()), so that no sample has pdf 0.
 template <typename T, std::size_t MaxVertices = 8, typename Wide = detail::wider_t<T>>
 class spherical_polygon_sampler {
     static_assert(MaxVertices >= 3, "a polygon has at least 3 vertices");
@@ -118,13 +114,21 @@ class spherical_polygon_sampler {
 
     /// Solid angle of the polygon (the sum of its fan triangles'); 0 when empty().
     LTC_HOST_DEVICE T solid_angle() const { return total_; }
-    /// Whether the polygon is sampled in Wide (file comment).
+    /// Whether the polygon is sampled in Wide (the class comment's Accuracy).
     LTC_HOST_DEVICE bool widened() const { return widened_; }
     /// No direction to sample (constructor); then sample() returns a finite unit direction (the
     /// first vertex when it is one) and pdf() is 0.
     LTC_HOST_DEVICE bool empty() const { return !(total_ > T(0)); }
 
-    /// A direction uniformly distributed in the polygon for u in [0, 1]^2 (file comment).
+    /// A direction uniformly distributed in the polygon for u in [0, 1]^2.
+    ///
+    /// The polygon is a fan of triangles around vertex 0 (v_0, v_k, v_k+1), k = 1 .. n-2, each
+    /// sampled by Arvo's method (ltc/core/spherical_triangle_sampling.hpp) as
+    /// (a, b, c) = (v_k, v_0, v_k+1): then u.x = 0 is the edge v_0 v_1, u.x = 1 the edge v_n-1 v_0,
+    /// the diagonal v_0 v_k+1 is where triangle k ends and k+1 begins, and u.y = 0 is v_0; u.x
+    /// picks triangle k with probability Omega_k / Omega (Van Oosterom and Strackee 1983) and is
+    /// rescaled into [0, 1] for it, so the mapping [0, 1)^2 -> polygon is continuous and one 2D
+    /// sample keeps its stratification.
     LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
         if (empty()) return v_[0] == vec3(T(0)) || !detail::is_finite(v_[0]) ? vec3(T(0), T(0), T(1)) : v_[0];
         if constexpr (widens) {

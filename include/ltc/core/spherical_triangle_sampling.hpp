@@ -1,27 +1,15 @@
 // ltc/core/spherical_triangle_sampling.hpp -- uniform sampling of a spherical triangle in solid
 // angle, as a sampler trio (sample / pdf / invert) for host and device code (no heap, no
-// exceptions), in float or double.
+// exceptions), in float or double: Arvo's mapping (J. Arvo, "Stratified sampling of spherical
+// triangles", SIGGRAPH 1995) in pbrt-v4's arrangement, its sub-triangle found in closed form.
 //
 //   const ltc::spherical_triangle_sampler<float> s(a, b, c);   // unit vectors, either orientation
 //   glm::vec3 w = s.sample(u);    // u in [0, 1)^2; density s.pdf(w) = 1 / s.solid_angle() inside
 //   glm::vec2 v = s.invert(w);    // v == u up to rounding
 //
-// The mapping is Arvo's (J. Arvo, "Stratified sampling of spherical triangles", SIGGRAPH 1995) in
-// pbrt-v4's arrangement (SampleSphericalTriangle, InvertSphericalTriangleSample): u.x sets the
-// solid angle A' = u.x A of the sub-triangle (a, b, c'), c' on the arc from a to c, and u.y the
-// point w on the arc from b to c' by 1 - cos|b w| = u.y (1 - cos|b c'|).
-//
-// c' is found in closed form from Van Oosterom and Strackee (1983) rather than by Arvo's cos b'
-// formula, whose area from the angles and k1 = cos(phi) + cos(alpha) cancel for small triangles
-// (in float, edges of 1e-3 rad put c' off by a factor up to 3, edges of 8e-3 rad by 6%). With c' = cos(t) a + sin(t) e, e the unit tangent at a towards c,
-// tan(A'/2) = a.(b x c') / (1 + a.b + a.c' + b.c') is linear-fractional in tau = tan(t/2):
-//     tan(A'/2) = tau P / ((1 + a.b) + tau q),    P = e.(a x b),  q = e.b,              (1)
-// whose inverse is
-//     tan(t/2) = sin(A'/2) (1 + a.b) / (cos(A'/2) P - sin(A'/2) q).                      (2)
-// Every factor keeps its relative accuracy for tiny, huge and thin triangles: a x b by
-// detail::stable_cross, 1 + a.b = |a + b|^2 / 2, arc lengths by 2 asin(|x - y| / 2), and on the arc
-// sin(|b w| / 2) = sqrt(u.y) |c' - b| / 2. invert() meets the great circle through b and w with the
-// arc a c for c', evaluates (1) for u.x and takes u.y = |w - b|^2 / |c' - b|^2.
+// Conventions: the triangle lies in an open hemisphere (as the projection of any planar triangle
+// that misses the origin does). Degenerate cases: coincident or collinear vertices, or non-finite
+// input, give an empty() sampler (solid angle 0, pdf() 0; sample() returns a).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -81,9 +69,25 @@ LTC_HOST_DEVICE inline glm::vec<3, T> tangent_towards(const glm::vec<3, T>& x, c
 
 }  // namespace detail
 
-/// Uniform sampling of the spherical triangle (a, b, c) of unit vectors (file comment), with all
-/// that does not depend on the sample computed once. The triangle must lie in an open hemisphere
-/// (as the projection of any planar triangle that misses the origin does).
+/// Uniform sampling of the spherical triangle (a, b, c) of unit vectors, with all that does not
+/// depend on the sample computed once. The triangle must lie in an open hemisphere (as the
+/// projection of any planar triangle that misses the origin does).
+///
+/// The mapping is Arvo's (J. Arvo, "Stratified sampling of spherical triangles", SIGGRAPH 1995) in
+/// pbrt-v4's arrangement (SampleSphericalTriangle, InvertSphericalTriangleSample): u.x sets the
+/// solid angle A' = u.x A of the sub-triangle (a, b, c'), c' on the arc from a to c, and u.y the
+/// point w on the arc from b to c' by 1 - cos|b w| = u.y (1 - cos|b c'|).
+///
+/// c' is found in closed form from Van Oosterom and Strackee (1983) rather than by Arvo's cos b'
+/// formula (docs/design_notes.md). With c' = cos(t) a + sin(t) e, e the unit tangent at a towards c,
+/// tan(A'/2) = a.(b x c') / (1 + a.b + a.c' + b.c') is linear-fractional in tau = tan(t/2):
+///     tan(A'/2) = tau P / ((1 + a.b) + tau q),    P = e.(a x b),  q = e.b,              (1)
+/// whose inverse is
+///     tan(t/2) = sin(A'/2) (1 + a.b) / (cos(A'/2) P - sin(A'/2) q).                      (2)
+/// Every factor keeps its relative accuracy for tiny, huge and thin triangles: a x b by
+/// detail::stable_cross, 1 + a.b = |a + b|^2 / 2, arc lengths by 2 asin(|x - y| / 2), and on the arc
+/// sin(|b w| / 2) = sqrt(u.y) |c' - b| / 2. invert() meets the great circle through b and w with the
+/// arc a c for c', evaluates (1) for u.x and takes u.y = |w - b|^2 / |c' - b|^2.
 template <typename T>
 class spherical_triangle_sampler {
   public:
@@ -117,7 +121,7 @@ class spherical_triangle_sampler {
     /// True for a flat triangle (coincident or collinear vertices) or non-finite input.
     LTC_HOST_DEVICE bool empty() const { return !(area_ > T(0)); }
 
-    /// A direction uniformly distributed in the triangle for u in [0, 1]^2 (file comment).
+    /// A direction uniformly distributed in the triangle for u in [0, 1]^2 (the class comment).
     /// Returns a when empty().
     LTC_HOST_DEVICE vec3 sample(const vec2& u) const {
         if (empty()) return a_;

@@ -1,31 +1,7 @@
 // ltc/core/detail/ellipse_cone.hpp -- the cone that an ellipse subtends at the origin, in the frame of
 // its axis, and its horizon-clipped cosine integral in closed form (not part of the public API;
-// ltc/core/ellipse_integral.hpp states the results, this file the derivation).
-//
-// 1. Principal frame. The ellipse c + a s + b t (s^2 + t^2 <= 1) has semi-axes e1 >= e2 along
-//    v1, v2 and its plane's normal v3 points towards it: c = (x0, y0, l), l > 0.
-// 2. Axis. The cone over it is dual to T = diag(e1^2, e2^2, 0) - c c^T. Its negative eigenvalue
-//    -l^2 / mu solves g(mu) = mu (1 + x0^2 / d1 + y0^2 / d2) - 1 = 0, d_i = l^2 + mu e_i^2,
-//    a sum of positive terms, increasing and concave on (0, 1], with g' = |v|^2 for the axis
-//    v = (x0 l / d1, y0 l / d2, 1): Newton from a lower bound climbs monotonically. The
-//    unclipped form factor is |F| = mu e1 e2 / (|v| sqrt(d1 d2)) (for a centred circle of
-//    angular radius sigma: mu = 1, |F| = sin^2 sigma), F along v.
-// 3. Section. The automorphism of the unit disk (a Lorentz boost of (s, t, 1)) that takes the pole
-//    of the vanishing line {x : v.x = 0} to the centre maps the boundary to a parameterization
-//    (c - k r_u) + (r_u - k c) cos th + sqrt(1 - k^2) r_p sin th of the same rays, centred on the
-//    axis, with k = |w|, w_i = e_i x_i mu / d_i, r_u, r_p the semi-diameters along w and across
-//    it, and 1 - k^2 = mu |v|^2. Its conjugate semi-axes, written in (e_p, e_q) with e_q along
-//    r_p, are products of positive terms (make_cone_frame); a 2 x 2 SVD gives the principal ones
-//    sigma_1, sigma_2 (sigma_2 = det / sigma_1), and the cone's half-angles follow from
-//    tan alpha_i = sigma_i sqrt(mu) / l. Nothing above subtracts nearly equal numbers: both
-//    half-angles keep their relative accuracy for a needle-thin cone (a small, far light) and
-//    for a nearly flat one (a point close to the disk's plane).
-// 4. Integral. In the cone's frame, with (sa, ca) = (sin, cos) alpha_1 and (sb, cb) of alpha_2,
-//    x(th) ~ (sa cb cos th, ca sb sin th, ca cb), |x|^2 = cb^2 cos^2 th + ca^2 sin^2 th, and the
-//    z-weighted boundary integrand (x cross x').n / |x|^2 of ltc/core/ellipse_integral.hpp is
-//      (n3 sa sb ca cb - n1 ca^2 cb sb cos th - n2 ca cb^2 sa sin th) / (cb^2 cos^2 + ca^2 sin^2)
-//    for the horizon normal n in that frame: the first term integrates to an angle
-//    (atan2(ca sin th, cb cos th)), the others to atan or atanh (arc_antiderivative).
+// ltc/core/ellipse_integral.hpp states the results, this file the derivation, in four steps:
+// ellipse_frame, cone_axis, cone_frame, clipped_cone_integral).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -40,7 +16,10 @@
 LTC_NAMESPACE_BEGIN
 namespace detail {
 
-/// An ellipse in its principal frame, as seen from the origin (file comment, step 1).
+/// An ellipse in its principal frame, as seen from the origin.
+///
+/// 1. Principal frame. The ellipse c + a s + b t (s^2 + t^2 <= 1) has semi-axes e1 >= e2 along
+///    v1, v2 and its plane's normal v3 points towards it: c = (x0, y0, l), l > 0.
 template <typename T>
 struct ellipse_frame {
     glm::vec<3, T> v1, v2, v3;  // principal directions and the plane's normal (towards it)
@@ -132,8 +111,15 @@ LTC_HOST_DEVICE inline ellipse_frame<T> make_ellipse_frame(glm::vec<3, T> c, glm
     return f;
 }
 
-/// The cone's axis (file comment, step 2), for l > 0: mu, d_i, l^2, the axis v in (v1, v2, v3)
+/// The cone's axis (step 2 below), for l > 0: mu, d_i, l^2, the axis v in (v1, v2, v3)
 /// (unnormalized) and the unclipped form factor |F|.
+///
+/// 2. Axis. The cone over it is dual to T = diag(e1^2, e2^2, 0) - c c^T. Its negative eigenvalue
+///    -l^2 / mu solves g(mu) = mu (1 + x0^2 / d1 + y0^2 / d2) - 1 = 0, d_i = l^2 + mu e_i^2,
+///    a sum of positive terms, increasing and concave on (0, 1], with g' = |v|^2 for the axis
+///    v = (x0 l / d1, y0 l / d2, 1): Newton from a lower bound climbs monotonically. The
+///    unclipped form factor is |F| = mu e1 e2 / (|v| sqrt(d1 d2)) (for a centred circle of
+///    angular radius sigma: mu = 1, |F| = sin^2 sigma), F along v.
 template <typename T>
 struct cone_axis {
     T mu, d1, d2, l2, length_v, form_factor;
@@ -163,8 +149,7 @@ LTC_HOST_DEVICE inline cone_axis<T> make_cone_axis(const ellipse_frame<T>& f) {
     if (ry > T(0)) mu = glm::max(mu, positive_root(b, p + Y - ry * b, ry * p));
     // Newton from below: g < 0 and every step stays below the root (g is concave). Should
     // rounding put a bound above the root, the step from there lands below it (concavity again),
-    // and the loop ends: g >= 0 or a negligible step. Measured: <= 4 steps for 98% of disks, <= 11
-    // for ellipses of aspect 1e-8 seen from near their plane, beyond a tip.
+    // and the loop ends: g >= 0 or a negligible step (the step counts: docs/design_notes.md).
     // That step from above is floored at mu / 2: with the origin near both the ellipse's plane
     // and its rim, g ~ mu + (X / a + Y / b - 1) - O(p / mu) and the rim term cancels, so g and
     // the bounds carry absolute errors ~ epsilon while the root mu may be ~ epsilon itself; a
@@ -189,7 +174,19 @@ LTC_HOST_DEVICE inline cone_axis<T> make_cone_axis(const ellipse_frame<T>& f) {
 }
 
 /// The cone in its own right-handed frame (u1, u2, axis), in (v1, v2, v3) coordinates, and its
-/// half-angles (file comment, steps 3-4); theta increasing is the positive orientation.
+/// half-angles (step 3 below; step 4: clipped_cone_integral); theta increasing is the positive
+/// orientation.
+///
+/// 3. Section. The automorphism of the unit disk (a Lorentz boost of (s, t, 1)) that takes the pole
+///    of the vanishing line {x : v.x = 0} to the centre maps the boundary to a parameterization
+///    (c - k r_u) + (r_u - k c) cos th + sqrt(1 - k^2) r_p sin th of the same rays, centred on the
+///    axis, with k = |w|, w_i = e_i x_i mu / d_i, r_u, r_p the semi-diameters along w and across
+///    it, and 1 - k^2 = mu |v|^2. Its conjugate semi-axes, written in (e_p, e_q) with e_q along
+///    r_p, are products of positive terms (make_cone_frame); a 2 x 2 SVD gives the principal ones
+///    sigma_1, sigma_2 (sigma_2 = det / sigma_1), and the cone's half-angles follow from
+///    tan alpha_i = sigma_i sqrt(mu) / l. Nothing above subtracts nearly equal numbers: both
+///    half-angles keep their relative accuracy for a needle-thin cone (a small, far light) and
+///    for a nearly flat one (a point close to the disk's plane).
 template <typename T>
 struct cone_frame {
     glm::vec<3, T> u1, u2, axis;
@@ -256,7 +253,14 @@ LTC_HOST_DEVICE inline T arc_antiderivative(T s, T c, T p, T q) {
 }
 
 /// The horizon-clipped cosine integral of the positively oriented ellipse whose cone is k, with
-/// the horizon's normal n in the cone's frame: arc (file comment, step 4) plus chord, / 2 pi.
+/// the horizon's normal n in the cone's frame: arc (step 4 below) plus chord, / 2 pi.
+///
+/// 4. Integral. In the cone's frame, with (sa, ca) = (sin, cos) alpha_1 and (sb, cb) of alpha_2,
+///    x(th) ~ (sa cb cos th, ca sb sin th, ca cb), |x|^2 = cb^2 cos^2 th + ca^2 sin^2 th, and the
+///    z-weighted boundary integrand (x cross x').n / |x|^2 of ltc/core/ellipse_integral.hpp is
+///      (n3 sa sb ca cb - n1 ca^2 cb sb cos th - n2 ca cb^2 sa sin th) / (cb^2 cos^2 + ca^2 sin^2)
+///    for the horizon normal n in that frame: the first term integrates to an angle
+///    (atan2(ca sin th, cb cos th)), the others to atan or atanh (arc_antiderivative).
 template <typename T>
 LTC_HOST_DEVICE inline T clipped_cone_integral(const cone_frame<T>& k, T n1, T n2, T n3) {
     const T X = k.sa * k.cb, Y = k.ca * k.sb, Z = k.ca * k.cb;  // x(th) = (X cos, Y sin, Z)

@@ -4,21 +4,10 @@
 // lanes, the sign bit cleared), so a lane holds the bits that the same operations give in scalar
 // float code, whichever representation and instruction set computes it.
 //
-// Two representations of the same operations, in ltc::detail::lanes4:
-//   - f32x4_portable, m32x4_portable: a plain struct of four lanes, the operators written out lane
-//     by lane; defined everywhere (CUDA host and device code, MSVC, LTC_NO_SIMD);
-//   - f32x4_vector, m32x4_vector: the GCC/Clang vector extension (`vector_size(16)`: one SSE or
-//     NEON register), whose operators are the compiler's own; defined where LTC_F32X4_VECTOR is 1
-//     (host GCC and Clang, unless LTC_NO_SIMD is defined).
-// f32x4 and m32x4 name the one the build uses. A mask (m32x4, what a comparison returns) holds -1
-// (all bits set) in a true lane and 0 in a false one. Beyond the operators (+ - * / of lanes and
-// of a lane and a float, += -= *= /=; >= > < == of lanes and against a float; & | ^ ~ of masks; [] for one
-// lane): make4, splat, select, keep, bits, rotate, rotate_back, lane_sqrt, lane_abs below.
-//
-// lane_sqrt is the correctly rounded square root of each lane in both representations (std::sqrt,
-// or SSE's sqrtps through the builtin GCC and Clang share). Bitwise agreement with scalar code
-// presumes that neither contracts a * b + c into a fused multiply-add (-ffp-contract=off): a
-// compiler may contract vector and scalar expressions differently.
+// Two representations of the same operations, in ltc::detail::lanes4: f32x4_portable (a plain
+// struct, everywhere) and f32x4_vector (the GCC/Clang vector extension, where LTC_F32X4_VECTOR is
+// 1); f32x4 and m32x4 name the one the build uses. Conventions: a mask (m32x4) holds -1 in a true
+// lane, 0 in a false one; bitwise agreement with scalar code presumes -ffp-contract=off.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -27,6 +16,12 @@
 #include <cstdint>
 #include <type_traits>
 
+// Two representations of the same operations, in ltc::detail::lanes4:
+//   - f32x4_portable, m32x4_portable: a plain struct of four lanes, the operators written out lane
+//     by lane; defined everywhere (CUDA host and device code, MSVC, LTC_NO_SIMD);
+//   - f32x4_vector, m32x4_vector: the GCC/Clang vector extension (`vector_size(16)`: one SSE or
+//     NEON register), whose operators are the compiler's own; defined where LTC_F32X4_VECTOR is 1
+//     (host GCC and Clang, unless LTC_NO_SIMD is defined).
 #if !defined(LTC_NO_SIMD) && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
 #define LTC_F32X4_VECTOR 1
 #else
@@ -36,6 +31,12 @@
 LTC_NAMESPACE_BEGIN
 namespace detail {
 namespace lanes4 {
+
+// A mask (m32x4, what a comparison returns) holds -1 (all bits set) in a true lane and 0 in a
+// false one. Beyond the operators (+ - * / of lanes and of a lane and a float, += -= *= /=;
+// >= > < == of lanes and against a float; & | ^ ~ of masks; [] for one lane): make4, splat,
+// select, keep, bits, rotate, rotate_back, lane_sqrt, lane_abs below. f32x4 and m32x4 (after both
+// representations) name the one the build uses.
 
 // ---- The plain struct -------------------------------------------------------------------------
 
@@ -135,6 +136,11 @@ LTC_HOST_DEVICE LTC_INLINE m32x4_portable rotate_back(const m32x4_portable& a) {
 }
 
 /// The correctly rounded square root of each lane.
+///
+/// In both representations (std::sqrt, or SSE's sqrtps through the builtin GCC and Clang share).
+/// Bitwise agreement with scalar code presumes that neither contracts a * b + c into a fused
+/// multiply-add (-ffp-contract=off): a compiler may contract vector and scalar expressions
+/// differently.
 LTC_HOST_DEVICE LTC_INLINE f32x4_portable lane_sqrt(const f32x4_portable& a) {
     LTC_LANES4(f32x4_portable, std::sqrt(a.v[k]));
 }

@@ -1,6 +1,6 @@
 // ltc/core/detail/projected_triangle.hpp -- sampling a spherical triangle in the upper hemisphere with
 // density proportional to the clamped cosine w.z (projected solid angle), exactly: the triangle
-// piece of ltc/core/projected_solid_angle_sampling.hpp, where the method is described.
+// piece of ltc/core/projected_solid_angle_sampling.hpp (projected_polygon_sampler: the method).
 //
 // Geodesic polar coordinates about the apex a: the direction at angle psi from the side ab is
 // P(psi) = cos psi t_b + sin psi t_c (t_b, t_c an orthonormal basis of a's tangent plane, t_b

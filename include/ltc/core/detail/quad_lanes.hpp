@@ -1,49 +1,15 @@
 // ltc/core/detail/quad_lanes.hpp -- the float quad path on four lanes (ltc/core/detail/f32x4.hpp),
-// one edge of the quad per lane. quad_path.hpp takes it for float and the symmetric fits
+// one edge of the quad per lane: the clamped-cosine edge sum of eq. (11), times 2 pi, over the
+// quad clipped to the horizon z >= 0. quad_path.hpp takes it for float and the symmetric fits
 // (minimax_rational, the float default, and polynomial) in every build, in place of its switch
 // clipper, and the result has the same bits in every build: the lanes use only correctly rounded
 // operations (1 / sqrt, exact division; no estimate instruction, no fused multiply-add), in an
 // order fixed by the source, whether they are a vector register or a plain struct (LTC_NO_SIMD,
 // CUDA, MSVC) (f32x4.hpp: built with -ffp-contract=off).
 //
-// The clamped-cosine edge sum of eq. (11), times 2 pi, over the quad clipped to the horizon z >= 0
-// (vertices with z = 0 count as above, as in clip_to_horizon). Lane k holds edge k, from
-// v_{k-1} = a to v_k = b (v_k = M^-1 p_k, any scale):
-//   - the edge contributes its part above the horizon, [a or X, b or X] (0 where both ends are
-//     below), X its unit horizon crossing; the clipped polygon's horizon edge runs from the
-//     crossing of the edge that exits (a above, b below) to that of the edge that enters (in a
-//     quad with one run of vertices above the horizon there is one of each);
-//   - the vertices above the horizon are normalized, u = v * (1 / sqrt(|v|^2));
-//   - the crossing comes from the raw vertices, x = a.z b - b.z a, which is (a.z - b.z) |a| |b|
-//     times the chord's point on the horizon between the unit vertices (the crossing of the
-//     great circle, z = 0): X = x * (+-1 / sqrt(|x|^2)), + for the exit (a.z - b.z > 0), - for
-//     the entry. It needs neither the unit vertices nor a division, so the crossings and the
-//     vertices are normalized together, one square root per lane: a vertex below the horizon is
-//     never normalized and lends its lane to the crossing next to it (with one vertex below, the
-//     entry's crossing is normalized apart). Where |x|^2 <= 1e-36 (tiny vertices, or an edge
-//     whose ends are both within about 1e-18 |v| of the horizon) the square would lose precision:
-//     those quads take X = (a.z b - b.z a) / (a.z - b.z) from the unit vertices, whose length is
-//     at least the chord's distance to the origin;
-//   - each edge term is theta n_z = f(c) (p x q).z of edge_integral_z, for unit p, q and
-//     c = p . q: f the policy's fit of theta / sin(theta) on c >= 0, evaluated at 1 - |c|, and
-//     the cancellation-free cross product p x (q - p) (c >= 0) or p x (q + p) (c < 0); for c < 0,
-//     theta / sin(theta) = pi / sin(theta) - f(-c) (symmetric_extension) with
-//     sin(theta)^2 = (1 - c) |q + p|^2 / 2 (no cancellation: 1 + c = |q + p|^2 / 2 for unit
-//     vectors), and for the horizon edge, whose p x q is along z, (pi / sin(theta)) (p x q).z is pi
-//     with the sign of (p x q).z (computed in scalar code, the same operations);
-//   - the sum is ((e_0 + e_1) + (e_2 + e_3)) + h, h the horizon edge's term (no h without a
-//     crossing).
-// The path declines (returns false, sum 0: form_factor takes the general path, whose special
-// cases these are) where a vertex has |M^-1 p|^2 outside (1e-16, 1e16) (a vertex at the origin,
-// tiny, huge or not finite: the general path rescales), a crossing of the unit vertices has
-// |X|^2 <= 1e-16 (an edge passing within about 1e-8 of the shading point; tested as
-// |x|^2 <= 1e-16 (a.z^2 |b|^2 + b.z^2 |a|^2), which is |X|^2 <= 1e-16 to within a factor 2), the
-// quad has two runs of vertices above the horizon (two exits: only a non-convex quad has them),
-// or an edge above the horizon has c < 0 and sin(theta)^2 <= 1e-30 (endpoints nearly opposite:
-// the edge passes by the shading point, where the general path's theta / sin(theta) takes its own
-// limit), the horizon edge likewise with (p x q).z^2 <= 1e-30. A quad wholly below the horizon
-// gives 0, unless a vertex is not finite (|v|^2 - |v|^2 is then NaN): the general path decides
-// then.
+// Conventions: vertices M^-1 p_k of any scale, z = 0 counting as above (as in clip_to_horizon).
+// Degenerate cases: the path declines (false, sum 0) where the general path's special cases
+// arise (quad_sum lists them); a quad wholly below the horizon gives 0.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -79,7 +45,7 @@ namespace lanes4 {
 /// The index of the lowest set bit of b, for b in [1, 15].
 LTC_HOST_DEVICE LTC_INLINE int lowest_lane(unsigned b) { return (b & 1u) ? 0 : (b & 2u) ? 1 : (b & 4u) ? 2 : 3; }
 
-/// theta n_z of the edge p -> q of unit vectors, lane by lane (file comment); `degenerate` marks
+/// theta n_z of the edge p -> q of unit vectors, lane by lane (quad_sum); `degenerate` marks
 /// the lanes with c < 0 and sin(theta)^2 <= 1e-30.
 template <typename Policy, typename F, typename M>
 LTC_HOST_DEVICE LTC_INLINE F edge_terms(const F& px, const F& py, const F& pz, const F& qx, const F& qy, const F& qz,
@@ -117,7 +83,47 @@ LTC_HOST_DEVICE LTC_INLINE float horizon_term(float px, float py, float qx, floa
 }
 
 /// quad_form_factor's sum for the float quad whose vertices (M^-1 p, any scale) are in the lanes
-/// of bx, by, bz, or false (sum 0) where the general path must take over (file comment).
+/// of bx, by, bz, or false (sum 0) where the general path must take over (below).
+///
+/// The clamped-cosine edge sum of eq. (11), times 2 pi, over the quad clipped to the horizon
+/// z >= 0 (vertices with z = 0 count as above, as in clip_to_horizon). Lane k holds edge k, from
+/// v_{k-1} = a to v_k = b (v_k = M^-1 p_k, any scale):
+///   - the edge contributes its part above the horizon, [a or X, b or X] (0 where both ends are
+///     below), X its unit horizon crossing; the clipped polygon's horizon edge runs from the
+///     crossing of the edge that exits (a above, b below) to that of the edge that enters (in a
+///     quad with one run of vertices above the horizon there is one of each);
+///   - the vertices above the horizon are normalized, u = v * (1 / sqrt(|v|^2));
+///   - the crossing comes from the raw vertices, x = a.z b - b.z a, which is (a.z - b.z) |a| |b|
+///     times the chord's point on the horizon between the unit vertices (the crossing of the
+///     great circle, z = 0): X = x * (+-1 / sqrt(|x|^2)), + for the exit (a.z - b.z > 0), - for
+///     the entry. It needs neither the unit vertices nor a division, so the crossings and the
+///     vertices are normalized together, one square root per lane: a vertex below the horizon is
+///     never normalized and lends its lane to the crossing next to it (with one vertex below, the
+///     entry's crossing is normalized apart). Where |x|^2 <= 1e-36 (tiny vertices, or an edge
+///     whose ends are both within about 1e-18 |v| of the horizon) the square would lose precision:
+///     those quads take X = (a.z b - b.z a) / (a.z - b.z) from the unit vertices, whose length is
+///     at least the chord's distance to the origin;
+///   - each edge term is theta n_z = f(c) (p x q).z of edge_integral_z, for unit p, q and
+///     c = p . q: f the policy's fit of theta / sin(theta) on c >= 0, evaluated at 1 - |c|, and
+///     the cancellation-free cross product p x (q - p) (c >= 0) or p x (q + p) (c < 0); for c < 0,
+///     theta / sin(theta) = pi / sin(theta) - f(-c) (symmetric_extension) with
+///     sin(theta)^2 = (1 - c) |q + p|^2 / 2 (no cancellation: 1 + c = |q + p|^2 / 2 for unit
+///     vectors), and for the horizon edge, whose p x q is along z, (pi / sin(theta)) (p x q).z is
+///     pi with the sign of (p x q).z (computed in scalar code, the same operations);
+///   - the sum is ((e_0 + e_1) + (e_2 + e_3)) + h, h the horizon edge's term (no h without a
+///     crossing).
+///
+/// The path declines (returns false, sum 0: form_factor takes the general path, whose special
+/// cases these are) where a vertex has |M^-1 p|^2 outside (1e-16, 1e16) (a vertex at the origin,
+/// tiny, huge or not finite: the general path rescales), a crossing of the unit vertices has
+/// |X|^2 <= 1e-16 (an edge passing within about 1e-8 of the shading point; tested as
+/// |x|^2 <= 1e-16 (a.z^2 |b|^2 + b.z^2 |a|^2), which is |X|^2 <= 1e-16 to within a factor 2), the
+/// quad has two runs of vertices above the horizon (two exits: only a non-convex quad has them),
+/// or an edge above the horizon has c < 0 and sin(theta)^2 <= 1e-30 (endpoints nearly opposite:
+/// the edge passes by the shading point, where the general path's theta / sin(theta) takes its own
+/// limit), the horizon edge likewise with (p x q).z^2 <= 1e-30. A quad wholly below the horizon
+/// gives 0, unless a vertex is not finite (|v|^2 - |v|^2 is then NaN): the general path decides
+/// then.
 template <typename Policy, typename F>
 LTC_HOST_DEVICE LTC_INLINE bool quad_sum(const F& bx, const F& by, const F& bz, float& sum) {
     using M = decltype(bz >= 0.0f);
