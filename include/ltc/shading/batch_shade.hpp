@@ -1,59 +1,18 @@
 // ltc/shading/batch_shade.hpp -- ltc::shade (ltc/shading/shade.hpp) in batches, shaped as a
 // renderer's loops: one light over many shading points (a pass over a G-buffer, a light baker's
-// texels), and many polygon lights over one point.
+// texels), and many polygon lights over one point (docs/batches.md).
 //
 //   ltc::batch::surfaces<float> pts{count, {px, py, pz}, {nx, ny, nz}, {vx, vy, vz},
 //                                   roughness, ltc::batch::uniform(F0), ltc::batch::uniform(albedo)};
 //   ltc::batch::shading_results<float> out;   // specular[3], diffuse[3]: one array each, count items
-//   auto quad = ltc::polygon_light<float>::one_sided(vertices, 4, emission_normal, radiance);
 //   ltc::batch::shade(pts, quad, out);                          // ltc::ggx::ltc_and_cosine
-//   ltc::batch::shade<ltc::ggx::two_lobes>(pts, quad, out, ltc::batch::isa::avx2);
-//
-//   auto lights = ltc::batch::polygon_lights<float>::one_sided(count, x, y, z, normals, radiances);
 //   ltc::batch::shade(ltc::surface<float>{P, N, V, roughness, F0, albedo}, lights, out);
 //
-// Results (out holds points.count, or lights.size(), items). One light over points: item i is
-// ltc::shade<Model, Policy>(points.at(i), light, options) up to rounding (below). Many lights
-// over one point: item i is ltc::shade<Model, Policy>(point, lights.light(i, buffer), options),
-// light i's own contribution (sum them for the point's radiance). Both are
-//
-//   specular = sum over the model's lobes  L (F0 magnitude + (1 - F0) fresnel) I_lobe
-//   diffuse  = L albedo E
-//
-// with I_lobe the lobe's integral over the light (eq. 3 through its M^-1; the cosine lobe's is
-// E) and E the clamped cosine's (eq. 11), the light's facing applied (ltc/shading/lobes.hpp).
-//
-// Which items run in SIMD lanes (ltc/shading/batch.hpp: the instruction sets, isa, run-time
-// dispatch), and how close they are:
-//   - polygon lights (ltc::polygon_light: one-sided by emission normal in either vertex order or
-//     by winding, or two-sided) with the models of ltc/shading/ggx_models.hpp, one_lobe_table, or
-//     a user's model with a model_tables specialization: one point per lane (ltc/shading/detail/
-//     batch_simd_shading.inc) over many points; over many polygon_lights, the frame and the
-//     fetch once, each light's vertices in the order its factory walks them, and the lights'
-//     integrals through the kernel of ltc/shading/batch.hpp, one light per lane. Such an item
-//     differs from ltc::shade's by rounding only, within the tolerance tests/test_batch_shading.cpp
-//     derives (the integrals' clip tolerance of tests/test_batch.cpp plus the local vertices'
-//     rounding amplified by M^-1's conditioning; the lanes' frame and fetch within
-//     tests/test_batch_lanes.cpp's bounds), float and double (tests/test_batch_shade.cpp).
-//   - the items the kernel hands back (tiny or huge coordinates, V within rounding of N, an edge
-//     through the point: ltc/shading/detail/lanes.inc), the last count % width, isa::scalar,
-//     edge policies without a SIMD kernel (edge_policy::exact, the default in double:
-//     ltc/shading/batch.hpp), clippings other than horizon_clipping::ltc_space, and a light of
-//     fewer than 3 vertices go through ltc::shade itself: the same bits (where the compiler
-//     contracts no a * b + c into an FMA on its own: the CMake option LTC_FP_CONTRACT_OFF).
-//   - every other light (disk_light, sphere_light, line_light, tube_light, textured_quad_light,
-//     a user's) and models without tables: ltc::shade point by point, no SIMD (the same bits).
-//
-// Bad input, as ltc::shade: a point whose position, normal or view is not finite, or whose normal
-// or view is zero, gets 0 (specular and diffuse), in the SIMD lanes too; the roughness is clamped
-// to [0, 1], NaN read as 0. polygon_lights checks each light as its ltc::polygon_light factory
-// does: shade throws ltc::invalid_light for an emission normal that is zero, not finite or in the
-// light's plane (out is then partly written).
-//
-// The models' batch tables (model_tables): the tables of Model::coefficients<T>'s lobe set, in
-// the order and layout ltc::batch::lobe_set names (ltc/shading/batch_lobe_set.hpp), and the model's
-// fetch on the scalar path. A model with state (a table loaded at run time) is passed as the
-// first argument: shade(model, points, light, out); one_lobe_table is one.
+// Item i is ltc::shade's for point i, or light i's own contribution: specular = sum over the
+// model's lobes of L (F0 magnitude + (1 - F0) fresnel) I_lobe, diffuse = L albedo E (I_lobe: eq. 3
+// through M^-1; E: eq. 11), to rounding in SIMD lanes, the same bits elsewhere (shade). Bad input
+// as ltc::shade: a point not finite, or of zero normal or view, gets 0; polygon_lights' invalid
+// emission normals throw ltc::invalid_light.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -84,9 +43,12 @@
 LTC_NAMESPACE_BEGIN
 namespace batch {
 
-/// The LTC tables a model's lobes are fetched from in SIMD lanes (file comment): specialize with
+/// The LTC tables a model's lobes are fetched from in SIMD lanes: specialize with
 /// `static std::array<ltc_table, lobe_set<C>::tables> of(const Model&)`, C the model's
-/// coefficients. Not specialized: no SIMD kernel for the model (ltc::shade point by point).
+/// coefficients: the tables of Model::coefficients<T>'s lobe set, in the order and layout
+/// ltc::batch::lobe_set names (ltc/shading/batch_lobe_set.hpp); the scalar path uses the model's
+/// fetch. Not specialized: no SIMD kernel for the model (ltc::shade point by point). A model with
+/// state (a table loaded at run time, as one_lobe_table) is passed to shade as its first argument.
 template <typename Model>
 struct model_tables {};
 
@@ -204,7 +166,7 @@ std::size_t shade_polygon_lanes(const Model& model, const surfaces<T>& points, c
     return vectorized;
 }
 
-/// One light over many points (file comment).
+/// One light over many points (the public shade's comment).
 template <typename Policy, typename Model, typename T, typename Light>
 void shade_points(const Model& model, const surfaces<T>& points, const Light& light, const shading_results<T>& out,
                   isa which, const shade_options& o) {
@@ -276,7 +238,7 @@ void reversed_block(const polygon_lights<T, N>& lights, std::size_t base, std::s
         if (clear[j] == T(0)) reversed[j] = lights.reversed(base + j) ? T(1) : T(0);
 }
 
-/// Many polygon lights over one point (file comment): the frame and the fetch once, each
+/// Many polygon lights over one point (the public shade's comment): the frame and the fetch once, each
 /// light's vertices in the order it walks them in the local frame (frame.to_local(p - P)), then
 /// E (M = I) and each LTC's integral through the kernel of ltc/shading/batch.hpp, block by
 /// block; the lights it hands back and the tail through ltc::shade.
@@ -373,8 +335,40 @@ void shade_lights(const Model& model, const surface<T>& s, const polygon_lights<
 
 }  // namespace detail
 
-/// One light over count points (file comment): out item i = ltc::shade<Model, Policy>(points.at(i),
-/// light, options). A model with state: the overload taking it first.
+/// One light over count points: out item i = ltc::shade<Model, Policy>(points.at(i), light,
+/// options) up to rounding, e.g. ltc::batch::shade<ltc::ggx::two_lobes>(pts, quad, out, isa::avx2).
+/// A model with state: the overload taking it first.
+///
+/// Which items run in SIMD lanes (ltc/shading/batch.hpp: the instruction sets, isa, run-time
+/// dispatch), and how close they are:
+///   - polygon lights (ltc::polygon_light: one-sided by emission normal in either vertex order or
+///     by winding, or two-sided) with the models of ltc/shading/ggx_models.hpp, one_lobe_table, or
+///     a user's model with a model_tables specialization: one point per lane (ltc/shading/detail/
+///     batch_simd_shading.inc). Such an item differs from ltc::shade's by rounding only, within the
+///     tolerance tests/test_batch_shading.cpp derives (the integrals' clip tolerance of
+///     tests/test_batch.cpp plus the local vertices' rounding amplified by M^-1's conditioning; the
+///     lanes' frame and fetch within tests/test_batch_lanes.cpp's bounds), float and double
+///     (tests/test_batch_shade.cpp).
+///   - the items the kernel hands back (tiny or huge coordinates, V within rounding of N, an edge
+///     through the point: ltc/shading/detail/lanes.inc), the last count % width, isa::scalar,
+///     edge policies without a SIMD kernel (edge_policy::exact, the default in double:
+///     ltc/shading/batch.hpp), clippings other than horizon_clipping::ltc_space, and a light of
+///     fewer than 3 vertices go through ltc::shade itself: the same bits (where the compiler
+///     contracts no a * b + c into an FMA on its own: the CMake option LTC_FP_CONTRACT_OFF).
+///   - every other light (disk_light, sphere_light, line_light, tube_light, textured_quad_light,
+///     a user's) and models without tables: ltc::shade point by point, no SIMD (the same bits).
+///
+/// Both shapes give item i as
+///
+///   specular = sum over the model's lobes  L (F0 magnitude + (1 - F0) fresnel) I_lobe
+///   diffuse  = L albedo E
+///
+/// with I_lobe the lobe's integral over the light (eq. 3 through its M^-1; the cosine lobe's is
+/// E) and E the clamped cosine's (eq. 11), the light's facing applied (ltc/shading/lobes.hpp).
+///
+/// Bad input, as ltc::shade: a point whose position, normal or view is not finite, or whose normal
+/// or view is zero, gets 0 (specular and diffuse), in the SIMD lanes too; the roughness is clamped
+/// to [0, 1], NaN read as 0.
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
 void shade(const surfaces<T>& points, const Light& light, const shading_results<T>& out, isa which = isa::automatic,
            const shade_options& options = {}) {
@@ -388,8 +382,16 @@ void shade(const Model& model, const surfaces<T>& points, const Light& light, co
     detail::shade_points<Policy>(model, points, light, out, which, options);
 }
 
-/// count = lights.size() polygon lights over one point (file comment): out item i =
-/// ltc::shade<Model, Policy>(point, lights.light(i, buffer), options).
+/// count = lights.size() polygon lights over one point: out item i =
+/// ltc::shade<Model, Policy>(point, lights.light(i, buffer), options), light i's own contribution
+/// (sum them for the point's radiance), e.g. with
+/// `auto lights = ltc::batch::polygon_lights<float>::one_sided(count, x, y, z, normals, radiances)`.
+/// In SIMD lanes (the first overload's comment: which lights, models and policies, how close): the
+/// frame and the fetch once, each light's vertices in the order its factory walks them, and the
+/// lights' integrals through the kernel of ltc/shading/batch.hpp, one light per lane. Bad input:
+/// the first overload's; polygon_lights checks each light as its ltc::polygon_light factory does:
+/// shade throws ltc::invalid_light for an emission normal that is zero, not finite or in the
+/// light's plane (out is then partly written).
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, std::size_t N>
 void shade(const surface<T>& point, const polygon_lights<T, N>& lights, const shading_results<T>& out,
            isa which = isa::automatic, const shade_options& options = {}) {
