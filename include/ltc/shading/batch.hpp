@@ -1,5 +1,5 @@
 // ltc/shading/batch.hpp -- the clamped-cosine integral over many polygons at once, from
-// structure-of-arrays input, one item per SIMD lane.
+// structure-of-arrays input, one item per SIMD lane (docs/batches.md).
 //
 //   ltc::batch::quad_soa<float> in;
 //   in.m_inv = ltc::batch::matrices<float>::per_item(m);  // m[c][r][i]: (M^-1 of item i)[c][r]
@@ -8,32 +8,10 @@
 //
 // out[i] is the value of
 //   ltc::transformed<ltc::clamped_cosine<T, Policy>>::from_inverse(m_inv_i).integrate(p_i, n, s)
-// up to rounding: the clamped-cosine integral of M^-1 P, clipped to the horizon (eq. 11). The
-// default policy is edge_policy::automatic, as for the scalar integrals: minimax_rational in
-// float (float-accurate, the fastest), exact in double (which has no SIMD kernel: pass
-// minimax_rational or polynomial for double lanes at float accuracy).
-//
-// How (ltc/shading/detail/batch_simd_kernel.inc): explicit SIMD through the compiler's vector types
-// (ltc/shading/detail/simd.hpp says why not a SIMD library), one kernel compiled for three instruction sets
-// and chosen at run time, so that a build without -march runs 8 or 16 floats wide on an AVX2 or
-// AVX-512 CPU:
-//   isa::baseline  16-byte vectors: 4 floats (SSE2 on x86-64, NEON on AArch64), 2 doubles;
-//   isa::avx2      32-byte vectors with FMA: 8 floats, 4 doubles (x86-64 with AVX2 and FMA);
-//   isa::avx512    64-byte vectors: 16 floats, 8 doubles (x86-64 with AVX-512 F, CD, BW, DQ and
-//                  VL, x86-64-v4: Intel since Skylake-SP, AMD since Zen 4);
-//   isa::scalar    the scalar path, item by item.
-// isa::automatic (the default) takes the widest the CPU runs; an unavailable request falls back
-// to the next narrower one. Defining LTC_NO_SIMD before including ltc (or compiling with a
-// compiler without GCC's vector extensions, or for CUDA) leaves only the scalar path.
-//
-// The kernel needs no clipped polygon: every edge adds its part above the horizon, and the one
-// horizon edge runs from the crossing of the edge that exits to that of the edge that enters.
-// Items it does not take (a vertex at the origin, tiny, huge or non-finite vertices, an edge
-// through the shading point, a non-convex polygon with several runs above the horizon: see the
-// kernel's file comment) and the last count % width items go through the scalar path, so every
-// result is the scalar path's up to rounding (tests/test_batch.cpp derives the tolerance).
-// Policies other than minimax_rational, polynomial and user fits built on
-// ltc::detail::symmetric_fit run the scalar path.
+// up to rounding: the clamped-cosine integral of M^-1 P, clipped to the horizon (eq. 11); the
+// items the SIMD kernel declines, and the tail, are that scalar path's (integrate_polygons).
+// Policy: edge_policy::automatic (minimax_rational in float; exact in double, which has no SIMD
+// kernel). Instruction sets: isa, chosen at run time. Degenerate cases: N < 3 gives 0.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -49,7 +27,18 @@
 LTC_NAMESPACE_BEGIN
 namespace batch {
 
-/// The instruction set a batch runs with (see the file comment).
+/// The instruction set a batch runs with. How (ltc/shading/detail/batch_simd_kernel.inc): explicit
+/// SIMD through the compiler's vector types (ltc/shading/detail/simd.hpp; docs/design_notes.md says
+/// why not a SIMD library), one kernel compiled for three instruction sets and chosen at run time,
+/// so that a build without -march runs 8 or 16 floats wide on an AVX2 or AVX-512 CPU:
+///   isa::baseline  16-byte vectors: 4 floats (SSE2 on x86-64, NEON on AArch64), 2 doubles;
+///   isa::avx2      32-byte vectors with FMA: 8 floats, 4 doubles (x86-64 with AVX2 and FMA);
+///   isa::avx512    64-byte vectors: 16 floats, 8 doubles (x86-64 with AVX-512 F, CD, BW, DQ and
+///                  VL, x86-64-v4: Intel since Skylake-SP, AMD since Zen 4);
+///   isa::scalar    the scalar path, item by item.
+/// isa::automatic (the default) takes the widest the CPU runs; an unavailable request falls back
+/// to the next narrower one. Defining LTC_NO_SIMD before including ltc (or compiling with a
+/// compiler without GCC's vector extensions, or for CUDA) leaves only the scalar path.
 enum class isa { automatic, scalar, baseline, avx2, avx512 };
 
 /// Every instruction set but automatic, narrowest first.
@@ -146,6 +135,19 @@ void integrate(const matrices<T>& mats, std::size_t n, const T* const* x, const 
 
 /// out[i] = the horizon-clipped clamped-cosine integral of M_i^-1 P_i for count polygons of N
 /// vertices (N >= 3; N < 3 gives 0 like the scalar path), seen by a one- or two-sided emitter.
+///
+/// The default policy is edge_policy::automatic, as for the scalar integrals: minimax_rational in
+/// float (float-accurate, the fastest), exact in double (which has no SIMD kernel: pass
+/// minimax_rational or polynomial for double lanes at float accuracy). Policies other than
+/// minimax_rational, polynomial and user fits built on ltc::detail::symmetric_fit run the scalar
+/// path.
+///
+/// The kernel needs no clipped polygon: every edge adds its part above the horizon, and the one
+/// horizon edge runs from the crossing of the edge that exits to that of the edge that enters.
+/// Items it does not take (a vertex at the origin, tiny, huge or non-finite vertices, an edge
+/// through the shading point, a non-convex polygon with several runs above the horizon: see the
+/// kernel's file comment) and the last count % width items go through the scalar path, so every
+/// result is the scalar path's up to rounding (tests/test_batch.cpp derives the tolerance).
 template <typename Policy = edge_policy::automatic, typename T, std::size_t N>
 void integrate_polygons(const polygon_soa<T, N>& in, T* out, std::size_t count, sidedness s, isa which = isa::automatic) {
     detail::integrate<Policy, N>(in.m_inv, N, in.x, in.y, in.z, out, count, s, which);
@@ -163,8 +165,7 @@ void integrate_ngons(const ngon_soa<T>& in, T* out, std::size_t count, sidedness
     detail::integrate<Policy, 0>(in.m_inv, in.n, in.x, in.y, in.z, out, count, s, which);
 }
 
-/// integrate_ngons (the one kernel serves every n; kept from 0.1, where n > 8 had a kernel of
-/// its own).
+/// integrate_ngons (the one kernel serves every n; kept from 0.1).
 template <typename Policy = edge_policy::automatic, typename T>
 void integrate_ngons_blocked(const ngon_soa<T>& in, T* out, std::size_t count, sidedness s, isa which = isa::automatic) {
     integrate_ngons<Policy>(in, out, count, s, which);
