@@ -1,37 +1,24 @@
 // ltc/shading/detail/simd.hpp -- the explicit SIMD layer of the batch kernels (ltc/shading/batch.hpp):
 // vector types, the few primitives that need an instruction set (rsqrt, rcp, sqrt, bits, gather),
-// and the run-time choice between instruction sets.
+// and the run-time choice between instruction sets. Internal: ltc/shading/batch.hpp includes it.
 //
-// Those primitives call the compiler's x86 builtins (`__builtin_ia32_*`, which GCC's and Clang's
-// <immintrin.h> intrinsics are defined with, compiling to the same instructions) and generic
-// vector operations (`__builtin_convertvector`), so that no intrinsic header is included: the
-// builtins need no declaration. Where GCC and Clang name a builtin differently, `__clang__`
-// chooses.
-//
-// The layer is the compiler's own vector extension (GCC and Clang: `vector_size`), the one that
-// libstdc++'s <experimental/simd> is written in. Why not that, xsimd or Highway: the batch must
-// run at AVX2 width in a build without -march (run-time dispatch) from headers alone.
-//   - std::experimental::simd (GCC 12) fixes its ABI when the header is first included: inside a
-//     function compiled for AVX2 by __attribute__((target)), fixed_size_simd<float, 8> still
-//     compiles to pairs of 128-bit instructions (checked with GCC 12.2: no ymm register);
-//   - xsimd enables its AVX2 batch only when the translation unit is compiled with -mavx2;
-//   - Highway's run-time dispatch needs its library (libhwy) linked and the user's file
-//     re-included once per target.
-// Plain vector types, by contrast, compile to 256-bit instructions in any function compiled for
-// AVX2, whatever the flags of the translation unit. Each instruction set has a namespace below
-// (baseline: 16-byte vectors, SSE2 on x86-64; avx2: 32-byte vectors, AVX2 + FMA; avx512: 64-byte
-// vectors, AVX-512) whose functions
-// carry that instruction set's target attribute; the kernel (ltc/shading/detail/batch_simd_kernel.inc)
-// is compiled once in each.
-//
-// LTC_SIMD is 1 where the layer is available (GCC or Clang, not CUDA device compilation, not
-// disabled by defining LTC_NO_SIMD before including ltc); elsewhere the batch API runs its scalar
-// path item by item. LTC_SIMD_AVX2 and LTC_SIMD_AVX512 are 1 where the AVX2 and AVX-512 kernels
-// are compiled (x86-64).
+// The layer is the compiler's own vector extension (GCC and Clang: `vector_size`). Its primitives
+// call the compiler's x86 builtins (`__builtin_ia32_*`, which GCC's and Clang's <immintrin.h>
+// intrinsics are defined with, compiling to the same instructions) and generic vector operations
+// (`__builtin_convertvector`), so that no intrinsic header is included: the builtins need no
+// declaration. Where GCC and Clang name a builtin differently, `__clang__` chooses. Each
+// instruction set has a namespace below (baseline: 16-byte vectors, SSE2 on x86-64; avx2: 32-byte
+// vectors, AVX2 + FMA; avx512: 64-byte vectors, AVX-512) whose functions carry that instruction
+// set's target attribute; the kernel (ltc/shading/detail/batch_simd_kernel.inc) is compiled once
+// in each. Why not std::experimental::simd, xsimd or Highway: docs/design_notes.md.
 #pragma once
 
 #include <ltc/config.hpp>
 
+// LTC_SIMD is 1 where the layer is available (GCC or Clang, not CUDA device compilation, not
+// disabled by defining LTC_NO_SIMD before including ltc); elsewhere the batch API runs its scalar
+// path item by item. LTC_SIMD_AVX2 and LTC_SIMD_AVX512 are 1 where the AVX2 and AVX-512 kernels
+// are compiled (x86-64).
 #if !defined(LTC_NO_SIMD) && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
 #define LTC_SIMD 1
 #else
@@ -110,7 +97,7 @@ using types = vector_types<T, 16>;
 
 /// 1 / sqrt(x) for normal x > 0 (callers mask the other lanes). float on x86-64: the hardware
 /// estimate (relative error <= 1.5 * 2^-12) and one Newton step y (3/2 - x y^2 / 2), which
-/// squares the error (measured in tests/test_batch.cpp); double, and other targets: 1 / sqrt.
+/// squares the error (tests/test_batch.cpp checks it); double, and other targets: 1 / sqrt.
 template <typename V>
 LTC_SIMD_BASELINE_FN V rsqrt(V x) {
 #if defined(__SSE2__)
