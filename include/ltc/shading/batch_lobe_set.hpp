@@ -8,17 +8,9 @@
 //   set::tables == 2, set::cosine == false, set::ltc_count == 2;
 //   const auto ltcs = set::ltcs(c);           // the LTCs of c, one integral each (eq. 3)
 //
-// The tables of a model (ltc::batch::model_tables, ltc/shading/batch_shade.hpp) come in the
-// order and layout the trait names:
-//   lobes::one            1 table: the LTC
-//   lobes::ltc_and_cosine 2 tables: the clamped cosine's (its magnitude and Fresnel term; its
-//                         integral is the form factor E, eq. 11), then the LTC's with its four
-//                         M^-1 channels premultiplied by its magnitude (the layout of
-//                         ltc/fitting/fit_two_lobes.hpp's packed() for this model, divided out
-//                         as ggx_cosine_lobe::unpremultiplied does)
-//   lobes::two            2 tables: one LTC each
-// and each point's specular term is sum over lobes (F0 magnitude + (1 - F0) fresnel) I_lobe,
-// lobe by lobe in that order, as ltc::shade_lobes forms it.
+// Each point's specular term is sum over lobes (F0 magnitude + (1 - F0) fresnel) I_lobe, lobe by
+// lobe in the order of the model's tables, as ltc::shade_lobes forms it (lobe_set: the order and
+// layout of the tables).
 #pragma once
 
 #include <ltc/config.hpp>
@@ -31,6 +23,16 @@ LTC_NAMESPACE_BEGIN
 namespace batch {
 
 /// The batch kernels' view of a lobe set (file comment); defined for the three of lobes.hpp.
+/// The tables of a model (ltc::batch::model_tables, ltc/shading/batch_shade.hpp) come in the
+/// order and layout the trait names:
+///   lobes::one            1 table: the LTC
+///   lobes::ltc_and_cosine 2 tables: the clamped cosine's (its magnitude and Fresnel term; its
+///                         integral is the form factor E, eq. 11), then the LTC's with its four
+///                         M^-1 channels premultiplied by its magnitude (the layout of
+///                         ltc/fitting/fit_two_lobes.hpp's packed() for this model, divided out
+///                         as ggx_cosine_lobe::unpremultiplied does)
+///   lobes::two            2 tables: one LTC each
+/// and each point's specular term adds the lobes' terms in that order.
 template <typename Coefficients>
 struct lobe_set;
 
