@@ -137,8 +137,7 @@ class open_leaves {
     std::size_t size() const { return count_; }
     const cell_leaf<T>& operator[](std::size_t m) const { return data_[m]; }
     /// Field by field: a leaf just computed and copied whole would be read back in one wide load
-    /// from narrow stores (a store-forwarding stall: 30% of the 16-leaf quadtree's time, measured
-    /// with perf).
+    /// from narrow stores (a store-forwarding stall; its cost: docs/design_notes.md).
     void push(T bound, T i_d, int k, int i, int j) {
         cell_leaf<T>& l = data_[count_++];
         l.bound = bound, l.i_d = i_d, l.k = k, l.i = i, l.j = j;
