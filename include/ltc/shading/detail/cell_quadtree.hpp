@@ -80,11 +80,9 @@ struct cell_lanes {
 
 /// I_D of the cells (k, i, j)[0..count), count <= 16: float through the batch kernel
 /// (ltc/shading/batch.hpp) of cell_lanes, the lanes beyond count filled with copies of the last
-/// cell, so that no cell takes the scalar tail (a scalar integral costs a third of a whole vector
-/// of 8; with so few cells a call costs its latency, and one AVX-512 vector of 16 took longer
-/// than two AVX2 vectors of 8 on a Zen 4 core); double one by one (its default policy, exact,
+/// cell, so that no cell takes the scalar tail; double one by one (its default policy, exact,
 /// has no kernel). The corners are computed coordinate by coordinate over arrays, which the
-/// compiler vectorizes: corner by corner they took as long as the kernel.
+/// compiler vectorizes. (Why 8 lanes, no tail and the corners by coordinate: docs/design_notes.md.)
 template <typename T>
 inline void cell_integrals(const transformed<clamped_cosine<T>>& d, sidedness side, const cell_geometry<T>& g,
                            const cell_pyramid<T>& cells, const int* k, const int* i, const int* j, int count, T* out,
