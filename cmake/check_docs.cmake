@@ -14,7 +14,6 @@
 # the fitter writes, and those whose preambles are not shortened yet.
 set(_header_exempt
   "^include/ltc/tables/ggx"
-  "^include/ltc/shading/batch"
   "^include/ltc/shading/detail/")
 set(_preamble_max 15)
 
