@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Builds the five libFuzzer harnesses (tests/fuzz/fuzz_{core,shading,textured,shapes,samplers}.cpp)
-# with clang++ under AddressSanitizer and UndefinedBehaviorSanitizer, and runs each, one after
-# another, for the given seconds on a scratch copy of its seed corpus (tests/fuzz/corpus/<area>/,
-# where it has one); prints per harness the inputs it ran (libFuzzer's final "Done N runs" line)
-# and fails on any crash, leak, timeout or out-of-memory. Nothing is written into the repository:
-# builds, corpora, logs and crashing inputs go to a scratch folder (kept, and printed, on failure).
+# with clang++ under AddressSanitizer and UndefinedBehaviorSanitizer, and runs each for the given
+# seconds on a scratch copy of its seed corpus (tests/fuzz/corpus/<area>/, where it has one);
+# prints per harness the inputs it ran (libFuzzer's final "Done N runs" line) and fails on any
+# crash, leak, timeout or out-of-memory. Nothing is written into the repository: builds, corpora,
+# logs and crashing inputs go to a scratch folder (kept, and printed, on failure).
 #
 #   tests/fuzz/run.sh [seconds] [extra libFuzzer arguments...]
 #
@@ -15,8 +15,9 @@
 #
 # Environment: CXX (clang++), LTC_FUZZ_HARNESSES (the areas to run, "core shading textured shapes
 # samplers"), LTC_FUZZ_WORK (the scratch folder, kept; default a new one under /dev/shm, else
-# $TMPDIR or /tmp, removed after a clean run), LTC_FUZZ_BUILD_JOBS (harnesses compiled at once, 1).
-# See tests/fuzz/README.md.
+# $TMPDIR or /tmp, removed after a clean run), LTC_FUZZ_PARALLEL (harnesses built and run at
+# once, each on its own core, 1; each keeps its seconds, so N of them take about 1/N of the
+# time). See tests/fuzz/README.md.
 set -euo pipefail
 
 declare -A share=([core]=18 [shading]=34 [textured]=36 [shapes]=14 [samplers]=18)
@@ -37,7 +38,14 @@ fi
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cxx=${CXX:-clang++}
 harnesses=(${LTC_FUZZ_HARNESSES:-core shading textured shapes samplers})
-jobs=${LTC_FUZZ_BUILD_JOBS:-1}
+parallel=${LTC_FUZZ_PARALLEL:-1}
+if [[ ! "$parallel" =~ ^[1-9][0-9]*$ ]]; then
+  echo "fuzz: LTC_FUZZ_PARALLEL='$parallel': give a number of harnesses at once (1, 2, ...)" >&2
+  exit 2
+fi
+if [[ -n "${LTC_FUZZ_BUILD_JOBS:-}" ]]; then
+  echo "fuzz: LTC_FUZZ_BUILD_JOBS is gone; LTC_FUZZ_PARALLEL=N builds and runs N harnesses at once" >&2
+fi
 if [[ -n "${LTC_FUZZ_WORK:-}" ]]; then
   work=$LTC_FUZZ_WORK keep=1
   mkdir -p "$work"
@@ -50,74 +58,97 @@ else
   work=$(mktemp -d "$scratch/ltc-fuzz.XXXXXX") keep=0
 fi
 work=$(cd "$work" && pwd)
-flags=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -I "$root/include")
+# -g1: line tables, all the sanitizers' stack traces use (file:line, inlined frames), at less
+# compile time than -g.
+flags=(-std=c++17 -g1 -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -I "$root/include")
 
-echo "fuzz: building ${harnesses[*]} in $work"
-pids=() names=()
-build_failed=0
-wait_builds() {
-  for i in "${!pids[@]}"; do
-    if ! wait "${pids[$i]}"; then
-      echo "fuzz: build of ${names[$i]} failed:" >&2
-      cat "$work/build_${names[$i]}.log" >&2
-      build_failed=1
-    fi
-  done
-  pids=() names=()
-}
 for h in "${harnesses[@]}"; do
-  src="$root/tests/fuzz/fuzz_$h.cpp"
-  [[ -f "$src" ]] || { echo "fuzz: no harness $src" >&2; exit 2; }
-  "$cxx" "${flags[@]}" "$src" -o "$work/fuzz_$h" >"$work/build_$h.log" 2>&1 &
-  pids+=($!) names+=("$h")
-  if (( ${#pids[@]} >= jobs )); then wait_builds; fi
+  [[ -f "$root/tests/fuzz/fuzz_$h.cpp" ]] || { echo "fuzz: no harness $root/tests/fuzz/fuzz_$h.cpp" >&2; exit 2; }
 done
-wait_builds
-if (( build_failed )); then exit 2; fi
 
-failed=()
-total=0
-summary=()
-for h in "${harnesses[@]}"; do
-  corpus="$work/corpus_$h" artifacts="$work/artifacts_$h"
-  mkdir -p "$corpus" "$artifacts"
+# One harness: build, then run for its seconds; writes status_<area> (build, fail or ok) and
+# line_<area> (its summary line).
+fuzz_one() {
+  local h=$1 corpus="$work/corpus_$h" artifacts="$work/artifacts_$h" rundir="$work/run_$h"
+  local log="$work/log_$h.txt" rc=0
+  if ! "$cxx" "${flags[@]}" "$root/tests/fuzz/fuzz_$h.cpp" -o "$work/fuzz_$h" >"$work/build_$h.log" 2>&1; then
+    echo "fuzz: build of $h failed:" >&2
+    cat "$work/build_$h.log" >&2
+    echo build >"$work/status_$h"
+    return
+  fi
+  mkdir -p "$corpus" "$artifacts" "$rundir"
   if [[ -d "$root/tests/fuzz/corpus/$h" ]]; then
     find "$root/tests/fuzz/corpus/$h" -maxdepth 1 -type f -exec cp {} "$corpus/" \;
   fi
-  log="$work/log_$h.txt"
-  rc=0
-  # From the scratch folder: with -jobs, libFuzzer writes its fuzz-<job>.log files to the
+  # From a folder of its own: with -jobs, libFuzzer writes its fuzz-<job>.log files to the
   # current directory.
   TIMEFORMAT='%U %S'
-  seconds=${share[$h]:-24}
-  { time (cd "$work" && "$work/fuzz_$h" -max_total_time="$seconds" -max_len=512 -print_final_stats=1 \
-            -artifact_prefix="$artifacts/" "$@" "$corpus" >"$log" 2>&1); } 2>"$work/cpu_$h.txt" || rc=$?
+  local seconds=${share[$h]:-24}
+  { time (cd "$rundir" && "$work/fuzz_$h" -max_total_time="$seconds" -max_len=512 -print_final_stats=1 \
+            -artifact_prefix="$artifacts/" "${fuzz_args[@]}" "$corpus" >"$log" 2>&1); } 2>"$work/cpu_$h.txt" || rc=$?
+  local cpu
   cpu=$(awk '{ printf "%.0f", $1 + $2 }' "$work/cpu_$h.txt" 2>/dev/null || echo 0)
   # The inputs run: the "Done N runs" line of the run, or of each job with -jobs.
-  logs=("$log")
-  for j in "$work"/fuzz-*.log; do if [[ -f "$j" ]]; then logs+=("$j"); fi; done
+  local logs=("$log") j
+  for j in "$rundir"/fuzz-*.log; do if [[ -f "$j" ]]; then logs+=("$j"); fi; done
+  local runs took
   runs=$(sed -n 's/^Done \([0-9]*\) runs in.*/\1/p' "${logs[@]}" | awk '{ s += $1 } END { print s + 0 }')
   took=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "${logs[@]}" | awk '{ s += $1 } END { print s + 0 }')
   if (( ${#logs[@]} > 1 )); then cat "${logs[@]:1}" >>"$log"; rm -f "${logs[@]:1}"; fi
-  rate=$(( took > 0 ? runs / took : 0 ))
-  total=$(( total + runs ))
+  local rate=$(( took > 0 ? runs / took : 0 ))
   # Also per second of CPU time (user and system, of every process the run started), which a
   # machine shared with other work lowers less than the wall-clock rate.
-  cpu_rate=$(( cpu > 0 ? runs / cpu : 0 ))
+  local cpu_rate=$(( cpu > 0 ? runs / cpu : 0 ))
+  local line
   line=$(printf '%-9s %12d inputs in %5d s (%d/s; %d/s of CPU), corpus %d files' "$h" "$runs" "$took" "$rate" \
          "$cpu_rate" "$(find "$corpus" -type f | wc -l)")
+  local status=ok
   if (( rc != 0 )) || ! grep -q '^Done [0-9]* runs' "$log"; then
     line+="  FAILED (exit $rc)"
-    failed+=("$h")
-    echo "fuzz: $h failed (exit $rc); the end of $log:" >&2
-    tail -n 60 "$log" >&2
-    ls "$artifacts" | sed "s|^|fuzz: crashing input $artifacts/|" >&2
+    status=fail
+    { echo "fuzz: $h failed (exit $rc); the end of $log:"
+      tail -n 60 "$log"
+      ls "$artifacts" | sed "s|^|fuzz: crashing input $artifacts/|"; } >&2
   fi
+  echo "$runs" >"$work/runs_$h"
+  printf '%s\n' "$line" >"$work/line_$h"
   echo "fuzz: $line"
-  summary+=("$line")
-done
+  echo "$status" >"$work/status_$h"
+}
+fuzz_args=("$@")
 
-echo "fuzz: summary ($cxx, ASan and UBSan)"
+# Longest first (compile seconds, measured with -g1, plus the run's share), so that with
+# LTC_FUZZ_PARALLEL=2 fuzz_shading's long compile starts at once and the short ones fill the
+# other core.
+declare -A build_cost=([core]=10 [shading]=52 [textured]=12 [shapes]=11 [samplers]=6)
+order=($(for h in "${harnesses[@]}"; do echo "$(( ${build_cost[$h]:-20} + ${share[$h]:-24} )) $h"; done |
+         sort -rn -k1,1 | awk '{ print $2 }'))
+
+echo "fuzz: building and running ${order[*]}, $parallel at once, in $work"
+running=0
+for h in "${order[@]}"; do
+  if (( running >= parallel )); then wait -n || true; running=$(( running - 1 )); fi
+  fuzz_one "$h" &
+  running=$(( running + 1 ))
+done
+wait || true
+
+failed=() build_failed=0 total=0 summary=()
+for h in "${harnesses[@]}"; do
+  status=$(cat "$work/status_$h" 2>/dev/null || echo none)
+  if [[ "$status" == build ]]; then build_failed=1; continue; fi
+  if [[ "$status" == none ]]; then
+    echo "fuzz: $h stopped before its summary (see $work)" >&2
+    failed+=("$h"); summary+=("$(printf '%-9s FAILED (no summary)' "$h")"); continue
+  fi
+  if [[ "$status" != ok ]]; then failed+=("$h"); fi
+  summary+=("$(cat "$work/line_$h")")
+  total=$(( total + $(cat "$work/runs_$h") ))
+done
+if (( build_failed )); then echo "fuzz: a build failed (logs in $work)" >&2; exit 2; fi
+
+echo "fuzz: summary ($cxx, ASan and UBSan, $parallel at once)"
 printf '  %s\n' "${summary[@]}"
 echo "  total     $(printf '%12d' "$total") inputs"
 if (( ${#failed[@]} > 0 )); then
