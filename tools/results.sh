@@ -34,6 +34,7 @@ report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo gr
 report textured_error.md "Textured lights against Monte Carlo ground truth" \
   "$build/tools/textured_error_report"
 echo "results: benchmarks" >&2
+mkdir -p "$build/speed"
 python3 "$root/benchmarks/speed_tables.py" --build "$build" --out "$build/speed" \
   --image "$build/speed/speed.png" >"$build/speed/tables.md"
 { echo "# Speed"; echo; echo "$stamp"; echo; cat "$build/speed/tables.md"; } >"$out/speed.md"
