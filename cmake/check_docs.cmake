@@ -16,6 +16,7 @@ set(_header_exempt
   "^include/ltc/tables/ggx")
 set(_preamble_max 15)
 
+cmake_minimum_required(VERSION 3.21)
 if(NOT LTC_SOURCE_DIR)
   message(FATAL_ERROR "check_docs: set -DLTC_SOURCE_DIR=<repository root>")
 endif()
