@@ -1,6 +1,7 @@
 // GGX shading of one quad light over 4096 shading points (a renderer's pass over its pixels):
 // the reference shader's shading (reference_shading.hpp: frame, two bilinear fetches, two
-// 16-case-clipped integrals), ltc::shade_polygon_light_one_lobe point by point (BM_library_scalar),
+// 16-case-clipped integrals), ltc::shade<Model>(surface, light) point by point for each GGX model
+// (BM_shade), ltc::shade_polygon_light_one_lobe point by point (BM_library_scalar),
 // and ltc::batch::shade_polygon_light_one_lobe (one point per SIMD lane); and one point shaded by
 // 4096 quad lights (ltc::batch::shade_quad_lights_one_lobe); and ltc::shade_polygon_light_two_lobe
 // point by point and ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table), and
@@ -26,12 +27,15 @@
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
+#include <ltc/shading/lights/polygon_light.hpp>
+#include <ltc/shading/shade.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -165,6 +169,26 @@ void BM_library_scalar_two_lobe(benchmark::State& state) { BM_library_scalar_opt
 template <typename Policy>
 void BM_library_scalar_cosine_lobe(benchmark::State& state) { BM_library_scalar_opt_in<Policy, true>(state); }
 
+// ltc::shade<Model>(surface, light) point by point, as a renderer calls it: the surface built per
+// point, the light once (the deprecated names above build both per call and forward to it).
+template <typename Model>
+void BM_shade(benchmark::State& state) {
+    const scene& s = the_scene();
+    const auto light = ltc::polygon_light<float>::two_sided(s.light, 4, s.radiance);
+    std::vector<float> red(kItems);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < kItems; ++i) {
+            const ltc::surface<float> p{s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i)};
+            const auto r = ltc::shade<Model>(p, light);
+            red[i] = r.specular.x + r.diffuse.x;
+        }
+        benchmark::DoNotOptimize(red.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kItems));
+    if (std::is_same_v<Model, ltc::ggx::one_lobe>) report_errors(state, red);
+}
+
 struct outputs {
     std::vector<float> c[6];
     outputs() {
@@ -272,6 +296,9 @@ BENCHMARK_TEMPLATE(BM_library_scalar_two_lobe, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library_scalar_two_lobe, ltc::edge_policy::minimax_rational);
 BENCHMARK_TEMPLATE(BM_library_scalar_cosine_lobe, ltc::edge_policy::exact);
 BENCHMARK_TEMPLATE(BM_library_scalar_cosine_lobe, ltc::edge_policy::minimax_rational);
+BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::one_lobe);
+BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::ltc_and_cosine);
+BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::two_lobes);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);

@@ -64,14 +64,23 @@ struct shading_point {
 ///   emitted(scale, integral)                      -> the radiance that scale x integral stands for
 /// (constant lights: radiance * scale * integral; textured ones integrate the colour themselves).
 /// Policy is the edge_policy of the polygon integrals (ltc/core/edge_policy.hpp).
+namespace detail {
+/// One LTC's specular term and the diffuse term: shade_lobes of lobes::one, the first lobe of lobes::two.
+template <typename Policy, typename T, typename Light>
+LTC_HOST_DEVICE inline shading_result<T> shade_ltc(const shading_point<T>& p, const ltc_coefficients<T>& c, const Light& light,
+                                                   const shade_options& o) {
+    const auto I = light.template integrals<Policy>(p.frame, p.position, c.m_inv, o);
+    shading_result<T> r;
+    r.specular = light.emitted(brdf_scale(p.f0, c), I.ltc);
+    r.diffuse = light.emitted(p.albedo, I.form_factor);
+    return r;
+}
+}  // namespace detail
+
 template <typename Policy, typename T, typename Light>
 LTC_HOST_DEVICE inline shading_result<T> shade_lobes(const shading_point<T>& p, const lobes::one<T>& c, const Light& light,
                                      const shade_options& o) {
-    const auto I = light.template integrals<Policy>(p.frame, p.position, c.ltc.m_inv, o);
-    shading_result<T> r;
-    r.specular = light.emitted(brdf_scale(p.f0, c.ltc), I.ltc);
-    r.diffuse = light.emitted(p.albedo, I.form_factor);
-    return r;
+    return detail::shade_ltc<Policy>(p, c.ltc, light, o);
 }
 
 template <typename Policy, typename T, typename Light>
@@ -88,7 +97,7 @@ LTC_HOST_DEVICE inline shading_result<T> shade_lobes(const shading_point<T>& p, 
 template <typename Policy, typename T, typename Light>
 LTC_HOST_DEVICE inline shading_result<T> shade_lobes(const shading_point<T>& p, const lobes::two<T>& c, const Light& light,
                                      const shade_options& o) {
-    shading_result<T> r = shade_lobes<Policy>(p, lobes::one<T>{c.first}, light, o);
+    shading_result<T> r = detail::shade_ltc<Policy>(p, c.first, light, o);
     const auto second = light.template ltc_integral<Policy>(p.frame, p.position, c.second.m_inv, o);
     r.specular += light.emitted(brdf_scale(p.f0, c.second), second);
     return r;

@@ -132,7 +132,7 @@ LTC_HOST_DEVICE inline polygon_light_integrals<T> integrals_shading_first(const 
 /// integrate_polygon_light over the world-space vertices vertex_at(0..n) (polygon_light reads a
 /// caller's vertices in either order through it).
 template <typename Policy, typename T, typename VertexAt>
-LTC_HOST_DEVICE inline polygon_light_integrals<T> integrate_polygon_light_at(
+LTC_HOST_DEVICE LTC_INLINE polygon_light_integrals<T> integrate_polygon_light_at(
     const shading_frame<T>& frame, const glm::mat<3, 3, T>& m_inv, const glm::vec<3, T>& P,
     const VertexAt& vertex_at, std::size_t n, horizon_clipping clip) {
     using vec3 = glm::vec<3, T>;

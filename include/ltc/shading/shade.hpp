@@ -24,7 +24,7 @@ LTC_NAMESPACE_BEGIN
 
 /// The shading point of s in the frame of the tables (invalid frame: N or V zero or not finite).
 template <typename T>
-LTC_HOST_DEVICE inline shading_point<T> make_shading_point(const surface<T>& s) {
+LTC_HOST_DEVICE LTC_INLINE shading_point<T> make_shading_point(const surface<T>& s) {
     return {make_shading_frame(s.normal, s.view), s.position, s.f0, s.albedo};
 }
 
@@ -37,9 +37,10 @@ LTC_HOST_DEVICE inline shading_point<T> make_shading_point(const surface<T>& s) 
 /// user's own (the model interface there). Bad input: the file's first comment.
 /// Policy: the edge terms of the polygon integrals (ltc/core/edge_policy.hpp).
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
-inline shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
-    if (!detail::finite(s.position) || !detail::finite(s.normal) || !detail::finite(s.view) ||
-        s.view == glm::vec<3, T>(T(0)))
+LTC_INLINE shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
+    // x - x is 0 for finite x, NaN for an infinity or NaN: one test for the nine coordinates.
+    const glm::vec<3, T> z = (s.position - s.position) + (s.normal - s.normal) + (s.view - s.view);
+    if (!(z.x + z.y + z.z == T(0)) || s.view == glm::vec<3, T>(T(0)))
         return {};
     const shading_point<T> p = make_shading_point(s);
     if (!p.frame.valid) return {};

@@ -55,7 +55,7 @@ LTC_HOST_DEVICE inline glm::vec<3, T> orthonormal_tangent(const glm::vec<3, T>& 
 
 /// The frame of ltc's tables at a shading point: N = +z, V in the half-plane x > 0 of y = 0.
 template <typename T>
-LTC_HOST_DEVICE inline shading_frame<T> make_shading_frame(const glm::vec<3, T>& N, const glm::vec<3, T>& V) {
+LTC_HOST_DEVICE LTC_INLINE shading_frame<T> make_shading_frame(const glm::vec<3, T>& N, const glm::vec<3, T>& V) {
     shading_frame<T> f;
     const glm::vec<3, T> n = detail::safe_normalize(N);
     if (n == glm::vec<3, T>(T(0))) {

@@ -104,7 +104,7 @@ public:
     LTC_HOST_DEVICE const vec3& radiance() const { return radiance_; }
     LTC_HOST_DEVICE sidedness sides() const { return side_; }
     /// The i-th vertex in the order the light walks them (its front: clockwise).
-    LTC_HOST_DEVICE const vec3& vertex(std::size_t i) const { return vertices_[reversed_ ? n_ - 1 - i : i]; }
+    LTC_HOST_DEVICE const vec3& vertex(std::size_t i) const { return first_[step_ * static_cast<std::ptrdiff_t>(i)]; }
 
     // The light interface of ltc::shade (ltc/shading/lobes.hpp): the sided integrals of the
     // clamped cosine (form factor, eq. 11) and of the LTC with inverse matrix m_inv (eq. 3), in
@@ -127,7 +127,8 @@ public:
 private:
     friend class detail::polygon_light_access<T>;
     LTC_HOST_DEVICE polygon_light(const vec3* v, std::size_t n, const vec3& radiance, sidedness side, bool reversed)
-        : vertices_(v), n_(n), radiance_(radiance), side_(side), reversed_(reversed) {}
+        : vertices_(v), first_(reversed && n > 0 ? v + (n - 1) : v), step_(reversed ? -1 : 1), n_(n), radiance_(radiance),
+          side_(side) {}
 
     static void check_vertices(const vec3* vertices, std::size_t n) {
         if (vertices == nullptr && n > 0) throw invalid_light("polygon_light: null vertices with n > 0");
@@ -137,10 +138,11 @@ private:
     }
 
     const vec3* vertices_;
+    const vec3* first_;      // the walk: vertex(i) = first_[step_ i], the caller's order or its reverse
+    std::ptrdiff_t step_;
     std::size_t n_;
     vec3 radiance_;
     sidedness side_;
-    bool reversed_;
 };
 
 namespace detail {
