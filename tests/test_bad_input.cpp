@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_bad_input {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using ltc_test::edge_sum_bound;
@@ -267,3 +269,5 @@ TEMPLATE_TEST_CASE("sidedness: one-sided keeps the front, two-sided both", "[bad
     const vec3<T> mirror_front[3] = {{0, 0, 1}, {1, 0, 1}, {1, -1, 1}};
     CHECK(mirrored.integrate_signed(mirror_front, 3) == Approx(-d.integrate_signed(front, 3)).epsilon(edge_sum_bound<T>(3) * 4));
 }
+
+}  // namespace ltc_test_bad_input

@@ -43,6 +43,8 @@
 #include <type_traits>
 #include <vector>
 
+namespace ltc_test_batch {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test;  // support/batch_items.hpp
 
 TEMPLATE_TEST_CASE("batch quads match the scalar path", "[batch]", ltc::edge_policy::polynomial,
@@ -344,3 +346,5 @@ TEST_CASE("simd gather: lane k loads base[index[k]], widened exactly, on every i
     }
 }
 #endif
+
+}  // namespace ltc_test_batch

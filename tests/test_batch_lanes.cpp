@@ -31,6 +31,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_batch_lanes {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 constexpr double kU = 0x1.0p-24;
@@ -140,3 +142,5 @@ TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions
         CHECK(checked + handed_back == count);
     }
 }
+
+}  // namespace ltc_test_batch_lanes

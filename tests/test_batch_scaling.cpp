@@ -14,6 +14,8 @@
 #include <cstddef>
 #include <vector>
 
+namespace ltc_test_batch_scaling {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test;  // support/batch_items.hpp
 
 TEMPLATE_TEST_CASE("batch and quad path: each vertex's length does not matter", "[batch][quad]",
@@ -47,3 +49,5 @@ TEMPLATE_TEST_CASE("batch and quad path: each vertex's length does not matter", 
         }
     }
 }
+
+}  // namespace ltc_test_batch_scaling

@@ -43,6 +43,8 @@
 #include <type_traits>
 #include <vector>
 
+namespace ltc_test_batch_shade {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using Policy = ltc::edge_policy::minimax_rational;
@@ -876,3 +878,5 @@ TEST_CASE("batch::one_lobe_table: a model of any table, its state passed first",
     }
     CHECK(differ == 0);
 }
+
+}  // namespace ltc_test_batch_shade

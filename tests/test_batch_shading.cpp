@@ -37,6 +37,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_batch_shading {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using Policy = ltc::edge_policy::minimax_rational;
@@ -629,3 +631,5 @@ TEST_CASE("the default shading is the table of an LTC and the cosine, bit for bi
     scalar(0.0f);
     scalar(0.0);
 }
+
+}  // namespace ltc_test_batch_shading

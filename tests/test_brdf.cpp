@@ -18,6 +18,8 @@
 #include <cstddef>
 #include <string>
 
+namespace ltc_test_brdf {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::brdf_checks;  // configurations, references, LTC_BRDF_TYPES
 
 // (a) int D(h) cos(theta_h) dh = 1 over the upper hemisphere.
@@ -106,3 +108,5 @@ TEMPLATE_TEST_CASE("brdf: energy conservation", "[brdf]", LTC_BRDF_TYPES) {
                   r0.albedo_error[p] + r1.albedo_error[p] + rho<T>(alphas[ia]) + rho<T>(alphas[ia + 1]));
         }
 }
+
+}  // namespace ltc_test_brdf

@@ -15,6 +15,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_brdf_eval {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::brdf_checks;  // configurations, references, LTC_BRDF_TYPES
 
 // (f) reciprocity: rho(V, L) = rho(L, V), i.e. eval(V, L) / L.z == eval(L, V) / V.z. Both sides
@@ -154,3 +156,5 @@ TEMPLATE_TEST_CASE("brdf: degenerate input", "[brdf]", LTC_BRDF_TYPES) {
     CHECK(B::pdf(V, L, T(0)) == B::pdf(V, L, B::alpha_min));
     CHECK(B::eval(V, L, B::alpha_min) > T(0));
 }
+
+}  // namespace ltc_test_brdf_eval

@@ -16,6 +16,8 @@
 #include <cstddef>
 #include <vector>
 
+namespace ltc_test_brdf_sampling {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::brdf_checks;  // configurations, references, LTC_BRDF_TYPES
 
 namespace {
@@ -111,3 +113,5 @@ TEMPLATE_TEST_CASE("brdf: sample() follows pdf(), and eval / pdf is unbiased", "
             CHECK(std::abs(mean - r.albedo[p]) <= 4 * se + r.albedo_error[p] + rho<T>(alphas[ia]) * r.albedo[p]);
         }
 }
+
+}  // namespace ltc_test_brdf_sampling

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+namespace ltc_test_checked_factories {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 template <typename T>
@@ -58,3 +60,4 @@ TEMPLATE_TEST_CASE("checked factories reject singular and non-finite matrices", 
     }
 }
 
+}  // namespace ltc_test_checked_factories

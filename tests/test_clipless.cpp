@@ -11,6 +11,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_clipless {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -150,3 +152,5 @@ TEST_CASE("clipless through an LTC with any edge policy: invariant to the scale 
         CHECK_THAT(cl::integrate(poly::from_inverse(m_inv), quad, 4, ltc::sidedness::two_sided),
                    Catch::Matchers::WithinRel(cl::integrate(exact::from_inverse(m_inv), quad, 4, ltc::sidedness::two_sided), 1e-5f));
 }
+
+}  // namespace ltc_test_clipless

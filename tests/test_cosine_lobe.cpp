@@ -25,6 +25,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace ltc_test_cosine_lobe {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle, node_m_inv
 
 namespace {
@@ -261,3 +263,5 @@ TEST_CASE("fit_two_lobe_table with the cosine: the same table on any number of t
         CHECK(one[i] == three[i]);
     }
 }
+
+}  // namespace ltc_test_cosine_lobe

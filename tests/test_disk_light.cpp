@@ -16,6 +16,8 @@
 #include <cstdio>
 #include <limits>
 
+namespace ltc_test_disk_light {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -203,3 +205,5 @@ TEST_CASE("disk integrals: scale invariance and degenerate input", "[disk][bad_i
         CHECK((j >= 0.0f && j <= 1.0f));
     }
 }
+
+}  // namespace ltc_test_disk_light

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+namespace ltc_test_edge_policies {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 struct error_at {
@@ -142,3 +144,5 @@ TEMPLATE_TEST_CASE("edge policies agree on polygon integrals within their factor
     const vec3 f = ltc::vector_form_factor<ltc::edge_policy::polynomial>(quad, 4);
     CHECK(std::isfinite(f.x + f.y + f.z));
 }
+
+}  // namespace ltc_test_edge_policies

@@ -24,6 +24,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_ellipse_integral {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -286,3 +288,5 @@ TEST_CASE("the origin next to both an ellipse's rim and its plane: finite, in [-
     check_rim_and_plane<float>(r);
     check_rim_and_plane<double>(r);
 }
+
+}  // namespace ltc_test_ellipse_integral

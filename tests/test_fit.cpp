@@ -18,6 +18,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_fit {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::table_checks;  // n, shipped, table_options
 
 TEST_CASE("the shipped table is what the fit computes (re-fit of three rows)", "[fit][table]") {
@@ -139,3 +141,5 @@ TEST_CASE("nelder_mead minimizes a quadratic and the Rosenbrock function", "[fit
     const auto capped = ltc::fit::nelder_mead<2>(rosenbrock, {-1.2, 1.0}, {0.1, 0.1}, 0.0, 50);
     CHECK(capped.evaluations <= 50 + 3);
 }
+
+}  // namespace ltc_test_fit

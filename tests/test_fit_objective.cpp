@@ -21,6 +21,8 @@
 #include <cstring>
 #include <vector>
 
+namespace ltc_test_fit_objective {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 struct node {
@@ -304,3 +306,5 @@ TEST_CASE("integral objective: the Fresnel part's quadrature and the two-lobe fi
     CHECK(interior > 0);
     CHECK(clamped > 0);
 }
+
+}  // namespace ltc_test_fit_objective

@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace ltc_test_fitted_table {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::table_checks;  // n, table_options
 
 namespace {
@@ -119,3 +121,5 @@ TEST_CASE("at roughness 1 and normal incidence the fitted LTC is close to a cosi
     CHECK(r.parameters.m11 == Approx(1).epsilon(0.2));
     CHECK(r.relative_l1 < 0.05);
 }
+
+}  // namespace ltc_test_fitted_table

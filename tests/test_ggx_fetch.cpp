@@ -13,6 +13,8 @@
 #include <cmath>
 #include <limits>
 
+namespace ltc_test_ggx_fetch {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::table_checks;  // n, shipped
 
 namespace {
@@ -120,3 +122,5 @@ TEMPLATE_TEST_CASE("fetch is finite and clamps its inputs to 0..1 (NaN to 0)", "
             REQUIRE(std::abs(glm::determinant(k.m_inv)) > T(0));
         }
 }
+
+}  // namespace ltc_test_ggx_fetch

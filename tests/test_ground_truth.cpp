@@ -17,6 +17,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_ground_truth {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::ground_truth_checks;  // the "BRDFs" and the test polygons
 
 TEST_CASE("ground truth of a Lambertian BRDF matches the exact form factor within 4 sigma", "[ground_truth]") {
@@ -132,3 +134,5 @@ TEST_CASE("ground truth is deterministic and handles degenerate polygons", "[gro
     const dvec3 collinear[3] = {{0, 0, 1}, {1, 0, 1}, {2, 0, 1}};
     CHECK(gt::integrate(lambert{}, V, 0.0, collinear, 3, opt).mean == 0.0);
 }
+
+}  // namespace ltc_test_ground_truth

@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <vector>
 
+namespace ltc_test_ground_truth_sampling {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::ground_truth_checks;  // the "BRDFs" and the test polygons
 
 namespace {
@@ -176,3 +178,5 @@ TEST_CASE("spherical polygon: winding, density and solid angle", "[ground_truth]
         CHECK(std::abs(integral - 1) <= 4 * std::sqrt(4 * ltc::pi<double>() / sp.solid_angle() / 100000) + 1e-12);
     }
 }
+
+}  // namespace ltc_test_ground_truth_sampling

@@ -22,6 +22,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_integrate_defaults {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 /// Bit patterns compared, so that a NaN or the sign of a zero would count as a difference.
@@ -152,3 +154,5 @@ TEMPLATE_TEST_CASE("the default of integrate() is two-sided: |signed|, whatever 
     check_default(ltc::uniform_sphere<T>{});
     check_default(ltc::uniform_hemisphere<T>{});
 }
+
+}  // namespace ltc_test_integrate_defaults

@@ -18,6 +18,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace ltc_test_jacobian {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::precision;  // eps, in_precision, exact_matrix
 
 namespace {
@@ -182,3 +184,5 @@ TEMPLATE_TEST_CASE("normalization: jacobian == area ratio of tiny mapped spheric
         CHECK(worst <= 1);
     }
 }
+
+}  // namespace ltc_test_jacobian

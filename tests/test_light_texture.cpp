@@ -12,6 +12,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_light_texture {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 std::vector<glm::vec3> random_image(int w, int h, std::uint64_t seed) {
@@ -214,3 +216,5 @@ TEST_CASE("light_texture rejects invalid input", "[light_texture]") {
     bad[2].y = std::numeric_limits<float>::infinity();
     CHECK_THROWS_AS(ltc::light_texture<float>(2, 2, bad.data()), std::invalid_argument);
 }
+
+}  // namespace ltc_test_light_texture

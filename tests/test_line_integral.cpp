@@ -29,6 +29,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_line_integral {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dmat3;
@@ -290,3 +292,5 @@ TEMPLATE_TEST_CASE("line integrals of degenerate segments are finite and as docu
     // the angle by atan2 (edge_policy::exact) instead of float's fit: the same to a few ulps
     CHECK(ltc::integrate_line_cosine<T, ltc::edge_policy::exact>(a, b) == Approx(ref).epsilon(16 * unit_roundoff<T>()));
 }
+
+}  // namespace ltc_test_line_integral

@@ -21,6 +21,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_ltc_polygon_sampling {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_sampling;
 
 // integral() == I_D = ref.integrate(P) in double (closed form, eq. 3) on the same M^-1 and vertices.
@@ -209,3 +211,5 @@ TEMPLATE_TEST_CASE("ltc sampler: pdf(sample(u).direction) > 0 for u on the borde
         CHECK(bad == 0);
     }
 }
+
+}  // namespace ltc_test_ltc_polygon_sampling

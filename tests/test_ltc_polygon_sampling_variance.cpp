@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_ltc_polygon_sampling_variance {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_sampling;
 
 namespace {
@@ -123,3 +125,5 @@ TEST_CASE("ltc sampler: variance of the GGX polygon integral with LTC, BRDF and 
     }
     WARN(table.str());
 }
+
+}  // namespace ltc_test_ltc_polygon_sampling_variance

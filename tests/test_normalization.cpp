@@ -23,6 +23,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_normalization {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::precision;  // eps, in_precision, exact_matrix
 
 namespace {
@@ -163,3 +165,5 @@ TEMPLATE_TEST_CASE("normalization: the six cube faces integrate to 1 (closed for
         }
     }
 }
+
+}  // namespace ltc_test_normalization

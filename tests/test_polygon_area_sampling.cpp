@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_polygon_area_sampling {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_sampling;
 
 namespace {
@@ -249,3 +251,5 @@ TEMPLATE_TEST_CASE("area sampler: vertices at the largest finite value", "[area-
             CHECK(x.z == big);
         }
 }
+
+}  // namespace ltc_test_polygon_area_sampling

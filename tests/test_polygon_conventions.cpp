@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_polygon_conventions {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_integration;  // support/polygon_references.hpp and the bound
 
 TEST_CASE("sign convention: signed integrals are positive when dot(p0, (p1 - p0) x (p2 - p0)) > 0", "[polygon][sign]") {
@@ -226,3 +228,5 @@ TEST_CASE("vector_form_factor: z is the unclipped cosine integral, x and y its o
         }
     }
 }
+
+}  // namespace ltc_test_polygon_conventions

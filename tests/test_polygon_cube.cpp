@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_polygon_cube {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_integration;  // support/polygon_references.hpp and the bound
 
 TEST_CASE("cube: each face subtends 4 pi / 6, and every distribution integrates to 1 over the six faces",
@@ -106,3 +108,5 @@ TEST_CASE("cube: each face subtends 4 pi / 6, and every distribution integrates 
         }
     }
 }
+
+}  // namespace ltc_test_polygon_cube

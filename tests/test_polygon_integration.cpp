@@ -26,6 +26,8 @@
 #include <cstddef>
 #include <string>
 
+namespace ltc_test_polygon_integration {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_integration;  // support/polygon_references.hpp and the bound
 
 namespace {
@@ -93,3 +95,5 @@ TEST_CASE("original distributions: closed-form polygon integrals equal a brute-f
     static bool printed = false;
     if (!printed) stats.print("original distributions (200 random polygons)"), printed = true;
 }
+
+}  // namespace ltc_test_polygon_integration

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_projected_sampling {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_sampling;
 using ltc_test::polygon_integration::form;
 using ltc_test::polygon_integration::rounding_bound;
@@ -193,3 +195,5 @@ TEMPLATE_TEST_CASE("projected sampler: evaluations per sample", "[projected-samp
                                                             << table.str() << "  all: " << overall);
     CHECK(overall < 12);
 }
+
+}  // namespace ltc_test_projected_sampling

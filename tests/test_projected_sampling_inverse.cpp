@@ -14,6 +14,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_projected_sampling_inverse {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_sampling;
 
 namespace {
@@ -273,3 +275,5 @@ TEMPLATE_TEST_CASE("projected sampler: a flat last fan triangle is never sampled
             }
         }
 }
+
+}  // namespace ltc_test_projected_sampling_inverse

@@ -29,6 +29,8 @@
 #include <cstddef>
 #include <vector>
 
+namespace ltc_test_quad_path {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 template <typename Policy>
@@ -132,3 +134,5 @@ TEST_CASE("quad fast path: M^-1 p overflowing to NaN does not pass for a quad be
     CHECK(quad_value<ltc::edge_policy::minimax_rational>(mi, quad, s) == general);
     CHECK(quad_value<ltc::edge_policy::exact>(mi, quad, s) == general_value<ltc::edge_policy::exact>(mi, quad, s));
 }
+
+}  // namespace ltc_test_quad_path

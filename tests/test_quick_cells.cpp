@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+namespace ltc_test_quick_cells {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::textured_cells;
 using ltc_test::textured_checks::finite;
 
@@ -283,3 +285,5 @@ TEMPLATE_TEST_CASE("quick_cells: below the horizon, non-finite, rescaled and hug
                 }
             }
 }
+
+}  // namespace ltc_test_quick_cells

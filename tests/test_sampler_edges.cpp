@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_sampler_edges {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -275,3 +277,5 @@ TEST_CASE("float samplers at a 1e-5 rad quad: normalizations and densities again
     CHECK(i_error <= 2 * eps);
     CHECK(lobe_pdf <= promise);
 }
+
+}  // namespace ltc_test_sampler_edges

@@ -36,6 +36,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_sampler_limits {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -318,3 +320,5 @@ TEMPLATE_TEST_CASE("sampler limits: a larger MaxVertices holds 12- and 16-gons; 
     CHECK(ltc::spherical_polygon_sampler<T>(five.data(), 5).sample(u) ==
           ltc::spherical_polygon_sampler<T, cap>(five.data(), 5).sample(u));
 }
+
+}  // namespace ltc_test_sampler_limits

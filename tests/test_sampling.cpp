@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_sampling {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using ltc_test::named_matrix;
@@ -280,3 +282,5 @@ TEMPLATE_TEST_CASE("sampling: u = (0, 0) and u next to 1 give finite unit direct
         CHECK(zero_pdf == 0);
     }
 }
+
+}  // namespace ltc_test_sampling

@@ -23,6 +23,8 @@
 #include <set>
 #include <vector>
 
+namespace ltc_test_screen_order {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 /// The point's binary digits: the top `bits` of each coordinate (exact: the coordinates are
@@ -147,3 +149,5 @@ TEST_CASE("screen order: per-period lattice shifts stratify a block's lattices t
         }
     }
 }
+
+}  // namespace ltc_test_screen_order

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_shade {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -748,3 +750,5 @@ TEMPLATE_TEST_CASE("shade: bad input, the same answer for every light and model"
         }
     }
 }
+
+}  // namespace ltc_test_shade

@@ -48,6 +48,8 @@
 #include <utility>
 #include <vector>
 
+namespace ltc_test_shade_shadowed {  // the file's own names, apart from the other files of a unity batch
+
 // shade_polygon_light_shadowed as it was before ltc::shade_shadowed (commit a8f79a0), verbatim but
 // for this namespace, kept as the reference of the deprecated wrapper's bits (d).
 namespace before {
@@ -798,3 +800,5 @@ TEMPLATE_TEST_CASE("shade_shadowed: each model against closed forms and ground t
         CHECK(within(stats[8], t_all_f.mean, t_all_f.standard_error));
     }
 }
+
+}  // namespace ltc_test_shade_shadowed

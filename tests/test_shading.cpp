@@ -14,6 +14,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_shading {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::shading_checks;  // lobes, random scenes, rel_diff
 
 TEST_CASE("shading frame: orthonormal, right-handed, V in the xz half-plane, V parallel to N", "[shading]") {
@@ -212,3 +214,5 @@ TEST_CASE("sidedness, lights below the horizon, invariance and degenerate input"
         }
     }
 }
+
+}  // namespace ltc_test_shading

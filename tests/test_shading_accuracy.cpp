@@ -14,6 +14,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_shading_accuracy {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::shading_checks;  // lobes, random scenes, rel_diff
 
 namespace {
@@ -85,3 +87,5 @@ TEST_CASE("shading is invariant to the scale of M^-1, down to 1e-20 in float", "
         }
     }
 }
+
+}  // namespace ltc_test_shading_accuracy

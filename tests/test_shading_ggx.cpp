@@ -17,6 +17,8 @@
 #include <cstdint>
 #include <vector>
 
+namespace ltc_test_shading_ggx {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::shading_checks;  // lobes, random scenes, rel_diff
 
 namespace {
@@ -137,3 +139,5 @@ TEST_CASE("LTC shading against the Monte Carlo GGX ground truth on a small grid"
             CHECK(sum[t][m] / count <= bounds[t][m].mean_all);
         }
 }
+
+}  // namespace ltc_test_shading_ggx

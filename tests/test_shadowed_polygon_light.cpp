@@ -47,6 +47,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_shadowed_polygon_light {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 struct scene {
@@ -546,3 +548,5 @@ TEST_CASE("shadowed polygon light: blocker distances from a first-hit callback",
         CHECK(std::isfinite(ltc::penumbra_width(1.0f, r.blockers)));
     }
 }
+
+}  // namespace ltc_test_shadowed_polygon_light

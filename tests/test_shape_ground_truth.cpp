@@ -21,6 +21,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_shape_ground_truth {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec2;
@@ -272,3 +274,5 @@ TEST_CASE("shape ground truth is deterministic and handles degenerate input", "[
     CHECK(same(gt::integrate_line(ggx, V, 0.2, {0, 0, -1}, {0, 0, 2}, opt), zero));       // through
     CHECK(same(gt::integrate_line(ggx, V, 0.2, -p0, -p1, opt), zero));                    // below
 }
+
+}  // namespace ltc_test_shape_ground_truth

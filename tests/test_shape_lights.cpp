@@ -25,6 +25,8 @@
 #include <cstdio>
 #include <limits>
 
+namespace ltc_test_shape_lights {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -287,3 +289,5 @@ TEST_CASE("shape lights: GGX against Monte Carlo within shape_error_report's mea
                     100 * k.error, 100 * bound(k.error, k.rse, rse(e)));
     }
 }
+
+}  // namespace ltc_test_shape_lights

@@ -23,6 +23,8 @@
 #include <utility>
 #include <vector>
 
+namespace ltc_test_solid_angle_sampling {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec2, glm::dvec3;
@@ -294,3 +296,5 @@ TEMPLATE_TEST_CASE("solid-angle sampling: empty polygons sample a finite unit di
     const ltc::spherical_triangle_sampler<T> flat(vec3(0, 0, 1), vec3(0, 0, 1), vec3(1, 0, 0));  // samples a
     CHECK((flat.empty() && flat.sample(glm::vec<2, T>(T(0.5))) == vec3(0, 0, 1) && flat.pdf(vec3(0, 0, 1)) == T(0)));
 }
+
+}  // namespace ltc_test_solid_angle_sampling

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_sphere_form_factor {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -207,3 +209,5 @@ TEST_CASE("sphere table: bilinear error within the derived bound, cell by cell",
     CHECK(worst_outside == 0.0);
     CHECK(cl::sphere_form_factor_table(0.3f, 0.1f) == Approx(cl::sphere_form_factor(0.3f, 0.1f)).margin(2.3e-3 * 0.3));
 }
+
+}  // namespace ltc_test_sphere_form_factor

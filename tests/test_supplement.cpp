@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 
+namespace ltc_test_supplement {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_supplement;
 
 namespace {
@@ -132,3 +134,5 @@ TEST_CASE("supplement 2.2: the discretized normalization of each distribution vs
         CHECK(std::abs(c1.norm - 1) < (r.norm - 1) / 10);
     }
 }
+
+}  // namespace ltc_test_supplement

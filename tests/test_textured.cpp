@@ -15,6 +15,8 @@
 #include <limits>
 #include <vector>
 
+namespace ltc_test_textured {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::textured_checks;  // ggx_lobe, random_quad, finite
 
 namespace {
@@ -243,3 +245,5 @@ TEST_CASE("textured shading is finite for degenerate and extreme configurations"
         CHECK(!std::isnan(f.sigma));
     }
 }
+
+}  // namespace ltc_test_textured

@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+namespace ltc_test_textured_cells {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::textured_cells;
 using ltc_test::textured_checks::finite;
 
@@ -299,3 +301,5 @@ TEMPLATE_TEST_CASE("the cells are finite for degenerate and extreme lights", "[t
                 }
             }
 }
+
+}  // namespace ltc_test_textured_cells

@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+namespace ltc_test_textured_cells_truth {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::textured_cells;
 
 constexpr double u_d = std::numeric_limits<double>::epsilon() / 2, kPi = 3.141592653589793;
@@ -293,3 +295,5 @@ TEST_CASE("full refinement against Monte Carlo of the texel-constant texture", "
             }
     }
 }
+
+}  // namespace ltc_test_textured_cells_truth

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ltc_test_textured_ground_truth {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::textured_checks;  // ggx_lobe, random_quad, finite
 
 TEST_CASE("textured ground truth: constant texture against the exact LTC integral", "[textured][ground_truth]") {
@@ -72,3 +74,5 @@ TEST_CASE("textured ground truth: a gradient texture against Gauss-Legendre quad
     CHECK(finite(eg.mean));
     CHECK(eg.mean.x > 0);
 }
+
+}  // namespace ltc_test_textured_ground_truth

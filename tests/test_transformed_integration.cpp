@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+namespace ltc_test_transformed_integration {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::polygon_integration;  // support/polygon_references.hpp and the bound
 
 namespace {
@@ -256,3 +258,5 @@ TEST_CASE("the supplement's example triangle: exact value 0.00589055 by brute fo
     CAPTURE(wrong);
     CHECK(std::abs(wrong - closed_d) > 1e-4);
 }
+
+}  // namespace ltc_test_transformed_integration

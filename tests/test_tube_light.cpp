@@ -19,6 +19,8 @@
 #include <cstdio>
 #include <limits>
 
+namespace ltc_test_tube_light {  // the file's own names, apart from the other files of a unity batch
+
 namespace {
 
 using glm::dvec3;
@@ -201,3 +203,5 @@ TEST_CASE("tube light: GGX against Monte Carlo within shape_error_report's measu
                     k.name, 100 * error, 100 * k.error, 100 * silhouette, 100 * k.silhouette);
     }
 }
+
+}  // namespace ltc_test_tube_light

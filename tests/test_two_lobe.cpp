@@ -25,6 +25,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace ltc_test_two_lobe {  // the file's own names, apart from the other files of a unity batch
+
 using namespace ltc_test::shading_checks;  // dvec3, pi, facing_rectangle, node_m_inv
 
 TEST_CASE("two-lobe table: finite entries, invertible lobes, shares adding up to the magnitude", "[two_lobe]") {
@@ -249,3 +251,5 @@ TEST_CASE("fit_two_lobe_table: the same table on any number of threads", "[two_l
     opt.size = 1;
     CHECK_THROWS_AS(ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt), std::invalid_argument);
 }
+
+}  // namespace ltc_test_two_lobe
