@@ -1,4 +1,4 @@
-// Sampling polygonal lights (issue 15): what one sample costs, float and double, over the same
+// Sampling polygonal lights (ltc/core/*_sampling.hpp): what one sample costs, float and double, over the same
 // 1024 shading configurations (a 1.2 x 1.2 quad light 1.2 above a floor, tilted 60 degrees so
 // that it crosses the horizon of part of the points; normals tilted up to 30 degrees; the GGX
 // table's lobe at each point's N.V, roughness 0.05-1):

@@ -229,7 +229,8 @@ void BM_batch_shading(benchmark::State& state) {
 // The other tables' batches, throughput only, as BM_library_scalar_opt_in: Cosine false, the two-lobe
 // batch (ltc/shading/batch_two_lobe.hpp); true, the batch of an LTC and the cosine
 // (ltc/shading/batch_cosine_lobe.hpp), also with each instruction set pinned, against the
-// one-lobe BM_batch_shading<isa> rows (issue 16's goal: at most 1.2x the one-lobe cost).
+// one-lobe BM_batch_shading<isa> rows (the goal set for the opt-in tables: at most 1.2x the
+// one-lobe cost).
 template <bool Cosine, ltc::batch::isa Which = ltc::batch::isa::automatic>
 void BM_batch_shading_opt_in(benchmark::State& state) {
     const scene& s = the_scene();

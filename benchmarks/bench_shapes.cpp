@@ -1,4 +1,4 @@
-// Line, disk and sphere lights (issue 14): the cost of one float shading call of each shape
+// Line, disk and sphere lights (ltc/shading/lights/): the cost of one float shading call of each shape
 // against the quad light's, over the same 4096 shading points (a 64 x 64 grid on the floor z = 0
 // of a room, normals tilted up to 30 degrees, seen from a camera at (0, -4, 2), roughness 0.05-1
 // over the grid). The lights, all centred at (0, 0, 1.2) and tilted by 60 degrees about x, so

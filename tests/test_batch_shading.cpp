@@ -566,7 +566,8 @@ TEST_CASE("LTC-and-cosine batch shading of many quad lights matches shade_polygo
 
 TEST_CASE("the default shading is the table of an LTC and the cosine, bit for bit", "[batch][shading][cosine_lobe]") {
     // ltc::shade_polygon_light, batch::shade_polygon_light and batch::shade_quad_lights are the
-    // _cosine_lobe functions (issue 16); the _one_lobe ones keep the paper's single LTC.
+    // _cosine_lobe functions (the default model, an LTC and the cosine); the _one_lobe ones keep
+    // the paper's single LTC.
     const std::size_t count = 67;
     const points_soa pts(count, 23);
     ltc_test::rng g(29);

@@ -19,10 +19,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace ltc_test_two_lobe {  // the file's own names, apart from the other files of a unity batch
@@ -234,8 +237,8 @@ TEST_CASE("two lobes at low roughness near grazing: mirror lights within 2%", "[
 }
 
 TEST_CASE("fit_two_lobe_table: the same table on any number of threads", "[two_lobe][fit]") {
-    // The chain of normal-incidence nodes runs on the calling thread while the others take rows
-    // as their first node is fitted: the table must not depend on that schedule.
+    // The chain of normal-incidence nodes runs on one thread while the others take rows as their
+    // first node is fitted: the table must not depend on that schedule.
     ltc::fit::options opt;
     opt.size = 4;
     opt.threads = 1;
@@ -250,6 +253,42 @@ TEST_CASE("fit_two_lobe_table: the same table on any number of threads", "[two_l
     }
     opt.size = 1;
     CHECK_THROWS_AS(ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt), std::invalid_argument);
+}
+
+TEST_CASE("fit_two_lobe_table: the progress callback, on the calling thread, leaves the table as it is",
+          "[two_lobe][fit]") {
+    // As fit_table's: called on the calling thread, done never decreasing, the last call with
+    // done == total, and the same table as without a callback; an exception it throws comes out
+    // of fit_two_lobe_table once the workers have stopped. Both models.
+    for (const auto model : {ltc::fit::two_lobe_model::two_ltcs, ltc::fit::two_lobe_model::ltc_and_cosine}) {
+        CAPTURE(int(model));
+        ltc::fit::options opt;
+        opt.size = 4;
+        opt.threads = 2;
+        opt.progress_interval = 0.001;
+        const std::thread::id caller = std::this_thread::get_id();
+        // Recorded in the callback and checked here: Catch's assertions are not for other threads.
+        std::size_t last_done = 0, calls = 0;
+        bool on_caller = true, ordered = true, totals = true;
+        const auto progress = [&](std::size_t done, std::size_t total) {
+            on_caller = on_caller && std::this_thread::get_id() == caller;
+            ordered = ordered && done >= last_done && done <= total;
+            totals = totals && total == 16;
+            last_done = done;
+            ++calls;
+        };
+        const std::vector<float> with = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt, model, progress).packed();
+        CHECK(on_caller);
+        CHECK(ordered);
+        CHECK(totals);
+        CHECK(last_done == 16);
+        CHECK(calls >= 1);
+        const std::vector<float> without = ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt, model).packed();
+        REQUIRE(with.size() == without.size());
+        CHECK(std::memcmp(with.data(), without.data(), with.size() * sizeof(float)) == 0);
+        const auto throws = [](std::size_t, std::size_t) { throw std::runtime_error("stop"); };
+        CHECK_THROWS_AS(ltc::fit::fit_two_lobe_table<ltc::brdf::ggx>(opt, model, throws), std::runtime_error);
+    }
 }
 
 }  // namespace ltc_test_two_lobe

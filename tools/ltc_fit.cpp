@@ -48,8 +48,8 @@ const char* const usage_text =
     "                 family; writes <brdf>_cosine_lobe_size and _data, the two-lobe layout\n"
     "                 with lobe 1 the cosine; default size 32)\n"
     "  --threads K    worker threads (default: all cores); the output does not depend on it; also -j K\n"
-    "  --quiet        no progress on standard error (default, with one lobe: a bar on a terminal,\n"
-    "                 else a line per tenth of the nodes); also -q\n"
+    "  --quiet        no progress on standard error (default, with any --lobes: a bar on a\n"
+    "                 terminal, else a line per tenth of the nodes); also -q\n"
     "  --help         this text; also -h\n"
     "\n"
     "At the end it prints the time taken and the fit error (relative L1 and L3 distances\n"
@@ -146,7 +146,8 @@ int run(const arguments& args, const char* description) {
     opt.fit_magnitude = args.fit_magnitude;
     ltc_examples::progress bar("fit", "nodes", ltc_examples::progress_on_stderr(args.quiet));
     if (args.lobes == 2) {
-        const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(opt, args.model);
+        const ltc::fit::two_lobe_table tab = ltc::fit::fit_two_lobe_table<Brdf>(
+            opt, args.model, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
         const double seconds = bar.seconds();
         if (!write_text(args.out, ltc::fit::two_lobe_table_header_text(args.brdf, description, tab, opt)))
             return 1;

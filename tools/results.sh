@@ -27,7 +27,7 @@ report() {  # report FILE TITLE COMMAND...: the command's output as a text block
   echo "results: $title" >&2
   { echo "# $title"; echo; echo "$stamp"; echo; echo '```text'; "$@"; echo '```'; } >"$out/$file"
 }
-report ggx_error.md "GGX shading against Monte Carlo ground truth (one-lobe table)" \
+report ggx_error.md "GGX shading against Monte Carlo ground truth (the one-lobe table and the three models of ltc::shade)" \
   "$build/tools/ggx_error_report" --fit-sizes 0 --objectives none
 report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo ground truth" \
   "$build/tools/shape_error_report"

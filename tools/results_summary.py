@@ -41,7 +41,8 @@ def main():
     lines = [
         f"- **Accuracy**: GGX shading of polygonal lights with the paper's one-lobe table, against a Monte "
         f"Carlo ground truth over {count} configurations: mean relative error {mean}, 95th percentile {p95} "
-        f"([results/ggx_error.md](docs/results/ggx_error.md), which also compares the horizon clippings).",
+        f"([results/ggx_error.md](docs/results/ggx_error.md), which also compares the horizon clippings and "
+        f"the three models of `ltc::shade`).",
         f"- **Speed**: the clamped-cosine integral of a quad in batches at {best_q / ref_q:.1f}x a port of the "
         f"paper's shader compiled alongside, GGX shading of a quad light in batches at {best_s / ref_s:.1f}x "
         f"its shading ([results/speed.md](docs/results/speed.md)).",

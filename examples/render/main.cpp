@@ -55,8 +55,8 @@
 //                  names (run it with another --out to keep the default run's): ltc.png and
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png
 //                  do not change. --lobes 1 likewise with ltc::shade_polygon_light_one_lobe, the
-//                  paper's single LTC (the default before issue 16; 0.96-1.00x the default's
-//                  cost in the README's benchmark).
+//                  paper's single LTC (the default before the model of an LTC and the cosine;
+//                  0.96-1.00x the default's cost in the README's benchmark).
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
 //                  polygonal light, two Monte Carlo integrals by ltc::ground_truth::integrate
 //                  (BRDF sampling of visible normals + uniform spherical-polygon sampling, balance

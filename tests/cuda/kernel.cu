@@ -13,7 +13,8 @@ __global__ void integrate_quads(const glm::vec3* quads, const glm::mat3* m_inv, 
              d.sample(glm::vec2(0.25f, 0.5f)).z + ltc::vector_form_factor(q, 4).z;
 }
 
-// The samplers of polygonal lights (issue 15), one sample each, with their pdf and inversion.
+// The samplers of polygonal lights (projected cosine, LTC, area, solid angle, spherical triangle),
+// one sample each, with their pdf and inversion.
 __global__ void sample_quads(const glm::vec3* quads, const glm::mat3* m_inv, glm::vec4* out, int count) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= count) return;
@@ -32,8 +33,9 @@ __global__ void sample_quads(const glm::vec3* quads, const glm::mat3* m_inv, glm
     out[i] = glm::vec4(a.direction + b.direction + x + y + z, pdfs + inverses);
 }
 
-// The two-lobe shading's second integral (issue 16): I_ltc alone, in world space, for each lobe
-// (coefficients from the two-lobe table on the host: the tables are host data).
+// The two-lobe shading's second integral (the LTC integral without the form factor): I_ltc
+// alone, in world space, for each lobe (coefficients from the two-lobe table on the host: the
+// tables are host data).
 __global__ void two_lobe_integrals(const glm::vec3* quads, const glm::mat3* m_inv, float* out, int count) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= count) return;

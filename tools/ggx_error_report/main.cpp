@@ -30,7 +30,10 @@
 // clipless methods against exact LTC clipping (the cost of the sphere approximation alone);
 // then the error of tables fitted here at smaller sizes (ltc::fit::fit_table), with their
 // fitting time and size, against the same ground truth; then tables fitted with each per-node
-// objective of ltc::fit::options::goal (--objectives, --objective-size), against the same.
+// objective of ltc::fit::options::goal (--objectives, --objective-size), against the same; then
+// (always) the three GGX models of ltc::shade (ltc/shading/ggx_models.hpp: one_lobe,
+// ltc_and_cosine, two_lobes), their specular term through ltc::shade<Model> against the same
+// ground truth over the same configurations, overall and with the same breakdowns.
 //
 // The grid (local frame N = +z, shading point at the origin, V = (sin theta_v, 0, cos theta_v)):
 //   theta_v    0, 30, 60, 80 degrees (--grid off: 15, 45, 65, 75)
@@ -52,7 +55,7 @@
 // Source files (tools/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
 // LTC estimate with each method), statistics.hpp (relative errors and their summaries),
 // common/parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
-// horizon.cpp, clipless.cpp, fit_sizes.cpp, objectives.cpp), and this file: the command line, the
+// horizon.cpp, clipless.cpp, fit_sizes.cpp, objectives.cpp, models.cpp), and this file: the command line, the
 // ground truth, the first section and the list of every configuration.
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
@@ -113,7 +116,9 @@ void print_help(const char* argv0) {
         "\n"
         "LTC shading of polygonal lights (the shipped GGX table, each horizon-clipping method) against\n"
         "Monte Carlo ground truth over a grid of 720 configurations; then tables fitted here at other\n"
-        "sizes and with other objectives (the file comment of tools/ggx_error_report/main.cpp).\n"
+        "sizes and with other objectives, and the three GGX models of ltc::shade (one_lobe,\n"
+        "ltc_and_cosine, two_lobes) against the same ground truth (the file comment of\n"
+        "tools/ggx_error_report/main.cpp).\n"
         "About 40 s on 2 cores, plus 10-20 s per objective.\n"
         "\n"
         "  --fit-sizes LIST       section 7's table sizes, comma-separated (default 8,16,32; 0: none)\n"
@@ -276,9 +281,10 @@ int main(int argc, char** argv) {
     print_clipless_vs_exact(grid, ev);
     print_fit_sizes(grid, ev, fit_sizes, threads);
     if (!objectives.empty()) print_fit_objectives(grid, ev, objective_size, objectives, threads);
+    print_models(grid, ev);
 
     if (list) {
-        std::printf("\n9. Every configuration: GT +- std error, then each method's relative error\n");
+        std::printf("\n10. Every configuration: GT +- std error, then each method's relative error\n");
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const auto& c = grid[i];
             std::printf("  th %2.0f r %.2f %-9s s/d %.1f %-6s%s GT %.5e +- %.1e (%8llu)", thetas[c.theta], roughnesses[c.rough],

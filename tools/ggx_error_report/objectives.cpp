@@ -3,7 +3,7 @@
 // ltc/fitting/integral_objective.hpp, their sum; each optionally with a fitted magnitude scale),
 // their fitting time, against the same ground truth and over the same significant
 // configurations as section 1 (the significance threshold uses the shipped table's albedo, so
-// that a fitted magnitude does not change the set). Also two-lobe rows (issue 16): the shipped
+// that a fitted magnitude does not change the set). Also two-lobe rows: the shipped
 // two-lobe table (ltc/shading/ggx_two_lobe_fetch.hpp), its fit timed here ("two-lobe-fit"), and
 // "cells": per (theta_v, roughness) cell, the one- and two-lobe fits at the cell's exact view
 // and roughness (no table: what any table resolution or spacing could reach at best). And the

@@ -37,4 +37,8 @@ void print_fit_sizes(const std::vector<config>& grid, const evaluation& ev, cons
 void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev, int size,
                           const std::vector<std::string>& objectives, unsigned threads);
 
+/// 9.: the three GGX models of ltc::shade (one_lobe, ltc_and_cosine, two_lobes), their specular
+/// term against the same ground truth (models.cpp).
+void print_models(const std::vector<config>& grid, const evaluation& ev);
+
 }  // namespace ggx_error_report

@@ -1,4 +1,4 @@
-// shape_error_report -- how far LTC shading of sphere, disk and tube lights (issue 14) is from the
+// shape_error_report -- how far LTC shading of sphere, disk and tube lights (ltc/shading/lights/) is from the
 // real GGX integral, and what each approximation on the way costs.
 //
 //   shape_error_report [--samples 65536] [--threads K] [--list]

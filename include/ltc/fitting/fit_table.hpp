@@ -33,8 +33,9 @@
 LTC_NAMESPACE_BEGIN
 namespace fit {
 
-/// Called on the thread that runs fit_table(), about every options::progress_interval seconds
-/// and once at the end: `done` of `total` nodes are fitted.
+/// Called on the thread that runs fit_table() (or fit_two_lobe_table(), ltc/fitting/fit_two_lobes.hpp),
+/// about every options::progress_interval seconds and once at the end: `done` of `total` nodes
+/// are fitted.
 using progress_callback = std::function<void(std::size_t done, std::size_t total)>;
 
 struct table {

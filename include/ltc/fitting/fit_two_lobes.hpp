@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
@@ -471,11 +472,16 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
 /// first from the one-lobe fit of its node, each next from the previous one, guarded by
 /// detail::fit_two_lobes_guarded), then each row of constant roughness from its normal-incidence
 /// node towards grazing, each node from its neighbour, on options::threads threads (the result
-/// does not depend on it). The chain runs on the calling thread while the others take the rows in
-/// the chain's order, each as soon as its first node is fitted. That order also puts the cheap rows
+/// does not depend on it). One of them runs the chain while the others take the rows in the
+/// chain's order, each as soon as its first node is fitted. That order also puts the cheap rows
 /// last (roughness below 0.2), so that the threads finish together. With the ltc_and_cosine model,
 /// every node starts from its own one-lobe fit (start_with_cosine) instead of its neighbour's
 /// two-lobe fit.
+///
+/// Progress: as fit_table's, `progress` (if set) is called on the calling thread, which waits for
+/// the workers, about every options::progress_interval seconds and once at the end, with the
+/// nodes fitted so far of size * size. If it throws, the workers stop after their current node of
+/// the chain or their current row, and the exception is rethrown once they have joined.
 ///
 /// Robustness: a lobe left with almost no share is dropped (fit_two_lobes), and the nodes that
 /// land on a plateau of the objective are refitted from their one-lobe fit as a single lobe
@@ -485,23 +491,27 @@ two_lobe_result fit_two_lobes_guarded(double cos_theta, double alpha, const two_
 /// views), since nodes are marched from their neighbours and a table interpolates lobe by lobe
 /// (tools/ggx_error_report, section 8).
 template <template <typename> class Brdf>
-two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two_lobe_model::two_ltcs) {
+two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two_lobe_model::two_ltcs,
+                                  const progress_callback& progress = {}) {
     if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_two_lobe_table: size must be at least 2");
     const int n = opt.size;
     two_lobe_table tab;
     tab.size = n;
     tab.model = model;
     tab.nodes.resize(std::size_t(n) * std::size_t(n));
+    const std::size_t total = tab.nodes.size();
     const double c0 = node_cos_theta(0, n, opt.cos_theta_min);
     const std::vector<node_result> one0 = fit_normal_incidence<Brdf>(opt);  // the one-lobe fits, for starts
     const bool with_cosine = model == two_lobe_model::ltc_and_cosine;
 
     std::mutex mutex;
-    std::condition_variable chain_advanced;
+    std::condition_variable chain_advanced, finished;
     int chain_at = n;  // the nodes (a, 0) with a >= chain_at are fitted
     bool stop = false;
+    int running = 0;  // threads started and not yet finished
     std::exception_ptr failure;
     std::atomic<int> next_row{n - 1};  // rows are taken downwards, in the chain's order
+    std::atomic<std::size_t> done{0};  // nodes fitted
     const auto fail = [&] {
         std::lock_guard<std::mutex> lock(mutex);
         if (!failure) failure = std::current_exception();
@@ -527,6 +537,27 @@ two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two
             const two_lobe_start start = with_cosine ? start_with_cosine(one()) : start_from(row[t - 1]);
             row[t] = detail::fit_two_lobes_guarded<Brdf>(node_cos_theta(t, n, opt.cos_theta_min), alpha, start, opt,
                                                          true, one);
+            done.fetch_add(1);
+        }
+    };
+    // The normal-incidence nodes, each released to the row workers once fitted.
+    const auto chain = [&] {
+        try {
+            two_lobe_start start = start_from_one_lobe(one0[std::size_t(n - 1)].parameters);
+            for (int a = n - 1; a >= 0; --a) {
+                if (with_cosine) start = start_with_cosine(one0[std::size_t(a)].parameters);
+                two_lobe_result& node = tab.nodes[std::size_t(a) * std::size_t(n)];
+                node = detail::fit_two_lobes_guarded<Brdf>(c0, node_alpha(a, n, opt.alpha_min), start, opt, false,
+                                                           [&] { return one0[std::size_t(a)].parameters; });
+                start = start_from(node);
+                done.fetch_add(1);
+                std::lock_guard<std::mutex> lock(mutex);
+                if (stop) break;
+                chain_at = a;
+                chain_advanced.notify_all();
+            }
+        } catch (...) {
+            fail();
         }
     };
     const auto worker = [&] {
@@ -543,29 +574,67 @@ two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two
             fail();
         }
     };
+    const auto thread_body = [&](bool runs_chain) {
+        if (runs_chain) chain();
+        worker();
+        std::lock_guard<std::mutex> lock(mutex);
+        --running;
+        finished.notify_all();
+    };
+    // The callback runs on this thread only (see the comment above).
+    const auto report = [&] {
+        if (!progress) return;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            if (failure) return;
+        }
+        try {
+            progress(done.load(), total);
+        } catch (...) {
+            fail();
+        }
+    };
 
     unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
     threads = std::min<unsigned>(threads, unsigned(n));
     std::vector<std::thread> pool;
+    pool.reserve(threads);
     try {
-        for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
-        two_lobe_start start = start_from_one_lobe(one0[std::size_t(n - 1)].parameters);
-        for (int a = n - 1; a >= 0; --a) {
-            if (with_cosine) start = start_with_cosine(one0[std::size_t(a)].parameters);
-            two_lobe_result& node = tab.nodes[std::size_t(a) * std::size_t(n)];
-            node = detail::fit_two_lobes_guarded<Brdf>(c0, node_alpha(a, n, opt.alpha_min), start, opt, false,
-                                                       [&] { return one0[std::size_t(a)].parameters; });
-            start = start_from(node);
-            std::lock_guard<std::mutex> lock(mutex);
-            if (stop) break;
-            chain_at = a;
-            chain_advanced.notify_all();
+        for (unsigned i = 0; i < threads; ++i) {
+            {
+                std::lock_guard<std::mutex> lock(mutex);
+                ++running;
+            }
+            try {
+                pool.emplace_back(thread_body, i == 0);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(mutex);
+                --running;
+                throw;
+            }
         }
-    } catch (...) {  // the chain failed, or a thread could not be started
+    } catch (...) {  // a thread could not be started: stop the others, then report
         fail();
+        for (std::thread& t : pool) t.join();
+        std::rethrow_exception(failure);
     }
-    worker();
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        if (!progress) {
+            finished.wait(lock, [&] { return running == 0; });
+        } else {
+            const auto interval = std::chrono::duration<double>(std::max(opt.progress_interval, 0.001));
+            while (running > 0) {
+                finished.wait_for(lock, interval);
+                if (running == 0) break;
+                lock.unlock();
+                report();
+                lock.lock();
+            }
+        }
+    }
     for (std::thread& t : pool) t.join();
+    report();
     if (failure) std::rethrow_exception(failure);
     return tab;
 }
