@@ -28,7 +28,8 @@ namespace render {
 inline std::vector<ltc::polygon_light<float>> ltc_lights(const scene& s) {
     std::vector<ltc::polygon_light<float>> lights;
     for (const light& l : s.lights)
-        lights.push_back(ltc::polygon_light<float>::one_sided(l.vertices.data(), l.vertices.size(), l.front, l.radiance));
+        lights.push_back(
+            ltc::polygon_light<float>::one_sided(l.vertices.data(), l.vertices.size(), l.front, l.radiance));
     return lights;
 }
 
@@ -107,7 +108,8 @@ inline void shade_ltc_batch(const scene& s, const std::vector<ltc::polygon_light
 /// The library's light for the scene's textured light (which must exist and outlive it: the light
 /// refers to its prefiltered texture), one-sided towards its front, integrated by the policy's
 /// method (the default policy is the paper's I_D I_L); built once per method.
-inline ltc::textured_quad_light<float> ltc_textured_light(const textured_light& t, const ltc::textured_policy& policy = {}) {
+inline ltc::textured_quad_light<float> ltc_textured_light(const textured_light& t,
+                                                          const ltc::textured_policy& policy = {}) {
     return ltc::textured_quad_light<float>::one_sided(t.quad, t.front, *t.prefiltered, policy);
 }
 

@@ -61,7 +61,8 @@ struct shape_lights {
     float tube_radius = 0.06f;
     vec3 tube_radiance = vec3(0.55f, 0.75f, 1.00f) * 40.0f;
     // The same three as the library's lights (after the members above, which they are built from).
-    ltc::disk_light<float> disk = ltc::disk_light<float>::one_sided(disk_centre, disk_normal, disk_radius, disk_radiance);
+    ltc::disk_light<float> disk =
+        ltc::disk_light<float>::one_sided(disk_centre, disk_normal, disk_radius, disk_radiance);
     ltc::sphere_light<float> sphere{sphere_centre, sphere_radius, sphere_radiance};
     ltc::tube_light<float> tube{tube_p0, tube_p1, tube_radius, tube_radiance};
 };

@@ -92,7 +92,8 @@ enum class analytic_model { one_lobe, two_lobes, ltc_and_cosine };
 /// given screen-ordered points, by the pixel's point of stream 0 with stratified_rotation (the
 /// neighbours' lattices stratified together: ltc/shading/shade_shadowed.hpp), the analytic part
 /// by `model`; `light`: ltc_light(s).
-inline ltc::shadowed_polygon_light_result<float> shade_shadowed_at(const scene& s, const ltc::polygon_light<float>& light,
+inline ltc::shadowed_polygon_light_result<float> shade_shadowed_at(const scene& s,
+                                                                  const ltc::polygon_light<float>& light,
                                                                   const tracer& tr, const pixel_hit& h,
                                                                   ltc::shadow_sampler sampler, int K, analytic_model model,
                                                                   ltc::ground_truth::splitmix64& rng,
