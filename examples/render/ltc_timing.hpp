@@ -2,7 +2,8 @@
 // runs: it takes milliseconds): point by point, and a row of pixels at a time through the batch
 // API (SIMD lanes), with the largest difference between the two; and the printed LTC times (with
 // the textured light's, by each method with --textured-method all). With --lobes 1 or 2 both
-// renders use that table (the _one_lobe or _two_lobe functions).
+// renders use that table (the model ltc::ggx::one_lobe or two_lobes). The library's lights are
+// built once (ltc_lights) for every pixel and run.
 #pragma once
 
 #include "camera.hpp"
@@ -26,7 +27,7 @@ struct ltc_timing {
     int lobes = 3;  // --lobes: the LTC table of the polygonal lights (3: cosine, the default)
     std::vector<dvec3> poly;  // point by point: the polygonal lights (and their emitters)
     double seconds = INFINITY;  // point by point, best of 5
-    double batch_seconds = INFINITY;  // through ltc::batch::shade_polygon_light (or --lobes' variant), best of 5
+    double batch_seconds = INFINITY;  // through ltc::batch::shade<Model> (Model: --lobes'), best of 5
     double batch_diff = 0;  // largest difference of a channel, batch against point by point
     double peak = 0;  // largest floor value of a channel, point by point (with the batch part)
 };
@@ -37,12 +38,13 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
     ltc_timing t;
     t.lobes = lobes;
     t.poly.resize(count);
+    const std::vector<ltc::polygon_light<float>> lights = ltc_lights(s);  // once, for every pixel and run
     for (int run = 0; run < 5; ++run) {
         const auto t0 = clock_type::now();
         for_each_row(H, threads, [&](int y) {
             for (int x = 0; x < W; ++x) {
                 const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                t.poly[i] = dvec3(shade_ltc(s, hits[i], lobes));
+                t.poly[i] = dvec3(shade_ltc(s, lights, hits[i], lobes));
             }
         });
         t.seconds = std::min(t.seconds, seconds_since(t0));
@@ -54,7 +56,7 @@ inline ltc_timing render_ltc_polygons(const scene& s, const std::vector<pixel_hi
         for_each_row(H, threads, [&](int y) {
             const std::size_t row = static_cast<std::size_t>(y) * W;
             std::vector<vec3> px(static_cast<std::size_t>(W));
-            shade_ltc_batch(s, hits.data() + row, px.size(), px.data(), lobes);
+            shade_ltc_batch(s, lights, hits.data() + row, px.size(), px.data(), lobes);
             for (int x = 0; x < W; ++x) ltc_batch[row + x] = dvec3(px[static_cast<std::size_t>(x)]);
         });
         t.batch_seconds = std::min(t.batch_seconds, seconds_since(t0));
@@ -87,10 +89,10 @@ inline void print_ltc_times(const scene& s, const ltc_timing& t, const std::vect
                     ltc_tex_seconds * 1e9 * threads / static_cast<double>(floor_pixels));
     }
 
-    std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade_polygon_light%s: %.1fx "
+    std::printf("LTC render, batch: %9.4f s  (the polygonal lights through ltc::batch::shade<ltc::ggx::%s>: %.1fx "
                 "as fast;\n                                largest difference to the point-by-point render %.1e, "
                 "floor values up to %.2f)\n",
-                t.batch_seconds, t.lobes == 1 ? "_one_lobe" : t.lobes == 2 ? "_two_lobe" : "",
+                t.batch_seconds, t.lobes == 1 ? "one_lobe" : t.lobes == 2 ? "two_lobes" : "ltc_and_cosine",
                 ltc_seconds / t.batch_seconds, t.batch_diff, t.peak);
     if (runs.size() > 1) print_method_times(runs, floor_pixels, threads);
 }

@@ -29,13 +29,14 @@
 // the fitted LTC tables are least accurate (see the README's error tables).
 //
 // Images, written into --out (default: the current directory):
-//   ltc.png        per pixel and light, ltc::shade_polygon_light (specular + diffuse; default
-//                  horizon clipping, one-sided): the default GGX table of an LTC and the clamped
-//                  cosine (the cosine's integral the diffuse term's form factor), the exact
-//                  polygon integral, Schlick's Fresnel through the table's magnitude and
-//                  fresnel terms (Hill 2016); for the textured light
-//                  ltc::shade_textured_quad_light (the one-lobe table, the same Fresnel, specular
-//                  and diffuse) with the ltc::textured_policy of --textured-method:
+//   ltc.png        per pixel and light, ltc::shade<ltc::ggx::ltc_and_cosine> of an
+//                  ltc::polygon_light, one-sided towards its front (specular + diffuse; default
+//                  horizon clipping): the default GGX table of an LTC and the clamped cosine (the
+//                  cosine's integral the diffuse term's form factor), the exact polygon integral,
+//                  Schlick's Fresnel through the table's magnitude and fresnel terms (Hill 2016);
+//                  for the textured light ltc::shade<ltc::ggx::one_lobe> of an
+//                  ltc::textured_quad_light (the one-lobe table, the same Fresnel, specular and
+//                  diffuse) with the ltc::textured_policy of --textured-method:
 //                    fetch        (the default) I_D I_L: the exact polygon integral times one
 //                                 trilinear fetch into the prefiltered ltc::light_texture (the
 //                                 paper, sections 5.2-5.4);
@@ -48,13 +49,13 @@
 //                                 exact integral of the texel-constant texture once every cell
 //                                 is a texel, and converging to it as the budget grows;
 //                    all          the three (below). float.
-//                  With --lobes 2 the polygonal lights by ltc::shade_polygon_light_two_lobe instead:
+//                  With --lobes 2 the polygonal lights by ltc::shade<ltc::ggx::two_lobes> instead:
 //                  the opt-in two-lobe GGX table, the sum of two exactly integrated lobes (same
-//                  arguments, diffuse term and Fresnel; about 1.6x the cost). The textured light
+//                  lights, diffuse term and Fresnel; about 1.6x the cost). The textured light
 //                  and the --shapes lights stay as they are (one lobe). The images keep their
 //                  names (run it with another --out to keep the default run's): ltc.png and
 //                  error.png are then the two-lobe render's; reference.png and textured_error.png
-//                  do not change. --lobes 1 likewise with ltc::shade_polygon_light_one_lobe, the
+//                  do not change. --lobes 1 likewise with ltc::shade<ltc::ggx::one_lobe>, the
 //                  paper's single LTC (the default before the model of an LTC and the cosine;
 //                  0.96-1.00x the default's cost in the README's benchmark).
 //   reference.png  the same GGX BRDF integrated without approximation: for every pixel and
@@ -224,9 +225,9 @@ int main(int argc, char** argv) {
                     opt.texture.empty() ? "procedural stained glass" : opt.texture.c_str(), 2.0 * tex->half_width,
                     2.0 * tex->half_height, opt.texture_radiance, prefilter_seconds, tex->prefiltered->level_count());
     if (opt.lobes == 2)
-        std::printf("polygonal lights: the two-lobe GGX table (--lobes 2: ltc::shade_polygon_light_two_lobe)\n");
+        std::printf("polygonal lights: the two-lobe GGX table (--lobes 2: ltc::shade<ltc::ggx::two_lobes>)\n");
     if (opt.lobes == 1)
-        std::printf("polygonal lights: the one-lobe GGX table (--lobes 1: ltc::shade_polygon_light_one_lobe)\n");
+        std::printf("polygonal lights: the one-lobe GGX table (--lobes 1: ltc::shade<ltc::ggx::one_lobe>)\n");
 
     // The textured light's LTC render by each method of --textured-method (one, or all three
     // with "all"); the first one's is the textured light of ltc.png, error.png and

@@ -3,7 +3,7 @@
 
 #include "common/cli.hpp"
 
-#include <ltc/shading/textured_light.hpp>
+#include <ltc/shading/lights/textured_quad_light.hpp>
 
 #include <cstddef>
 #include <cstdio>
@@ -36,15 +36,16 @@ struct options : ltc_examples::image_options {  // --width, --height, --threads,
     bool textured = true;      // the textured light (--no-texture: the two polygonal lights only)
     std::string texture;       // image file of the textured light; empty: the stained glass
     double texture_radiance = 8.0;  // radiance of a white texel
-    // --textured-method: the methods of ltc::shade_textured_quad_light to render the textured
-    // light with; one, or all three (fetch, quick_cells, exact_cells) with --textured-method all.
+    // --textured-method: the methods (the ltc::textured_policy of the ltc::textured_quad_light) to
+    // render the textured light with; one, or all three (fetch, quick_cells, exact_cells) with
+    // --textured-method all.
     std::vector<ltc::textured_method> textured_methods{ltc::textured_method::fetch};
     std::size_t cells = 64;  // --cells: exact_cells' budget (ltc::cell_budget::max_cells)
     bool shapes = false;     // --shapes: the disk, sphere and tube lights' section (shapes_render.hpp)
-    // --lobes: the LTC table of the polygonal lights in ltc.png, 1 (ltc::shade_polygon_light_one_lobe)
-    // or 2 (ltc::shade_polygon_light_two_lobe) or 3 for --lobes cosine, the default
-    // (ltc::shade_polygon_light, the table of an LTC and the cosine); the textured light and the
-    // --shapes lights keep one lobe.
+    // --lobes: the model of ltc::shade for the polygonal lights in ltc.png, 1 (ltc::ggx::one_lobe)
+    // or 2 (ltc::ggx::two_lobes) or 3 for --lobes cosine, the default (ltc::ggx::ltc_and_cosine,
+    // the table of an LTC and the cosine); the textured light and the --shapes lights keep one
+    // lobe (ltc::ggx::one_lobe).
     int lobes = 3;
 };
 
@@ -57,9 +58,10 @@ inline void print_help(const char* argv0) {
         "\n"
         "Renders a tiled floor (GGX dielectric, gold and copper; roughness 0.1 .. 0.9) lit by a\n"
         "rotated rectangular light, a pentagonal light and, between them, a textured quad light (a\n"
-        "procedural stained-glass window, or FILE), twice: with LTC (ltc::shade_polygon_light;\n"
-        "ltc::shade_textured_quad_light by --textured-method, by default the prefiltered-texture\n"
-        "fetch I_D I_L) and with a Monte Carlo reference of the same GGX BRDF with Schlick's Fresnel\n"
+        "procedural stained-glass window, or FILE), twice: with LTC (ltc::shade of each\n"
+        "ltc::polygon_light with the model of --lobes, and of the ltc::textured_quad_light by\n"
+        "--textured-method, by default the prefiltered-texture fetch I_D I_L) and with a Monte\n"
+        "Carlo reference of the same GGX BRDF with Schlick's Fresnel\n"
         "(ltc::ground_truth::integrate, BRDF and light sampling with MIS, the diffuse term in closed\n"
         "form; for the textured light ltc::textured_ground_truth::integrate of the texel-constant\n"
         "texture -- each texel's colour over its whole square, ltc::nearest_image_lookup: the\n"
@@ -116,17 +118,18 @@ inline void print_help(const char* argv0) {
         "                                  reference (computed once)\n"
         "  --cells N        exact_cells' budget: adaptive cells at most (default 64; at least 1)\n"
         "  --lobes L        the LTC table of the two polygonal lights in ltc.png: cosine, the default\n"
-        "                   (ltc::shade_polygon_light: an LTC and the clamped cosine, one LTC\n"
-        "                   integral), 1, the paper's single LTC (ltc::shade_polygon_light_one_lobe),\n"
-        "                   or 2, the opt-in two-lobe GGX table (ltc::shade_polygon_light_two_lobe:\n"
+        "                   (ltc::shade<ltc::ggx::ltc_and_cosine>: an LTC and the clamped cosine, one\n"
+        "                   LTC integral), 1, the paper's single LTC (ltc::shade<ltc::ggx::one_lobe>),\n"
+        "                   or 2, the opt-in two-lobe GGX table (ltc::shade<ltc::ggx::two_lobes>:\n"
         "                   the sum of two exactly integrated lobes, about 1.6x the cost). The\n"
         "                   textured light and the --shapes lights stay as they are (one lobe). The\n"
         "                   images keep their names (give another --out to keep both runs'); the LTC\n"
         "                   and batch times, error images and statistics are then those of that table.\n"
         "  --shapes         also a separate section: the floor lit by a disk, a sphere and a tube light\n"
-        "                   alone (ltc::shade_disk_light, shade_sphere_light, shade_tube_light against\n"
-        "                   Monte Carlo of the real GGX, --spp / 2 iterations): shapes_ltc.png,\n"
-        "                   shapes_reference.png, shapes_error.png and their statistics, printed last\n"
+        "                   alone (ltc::shade<ltc::ggx::one_lobe> of an ltc::disk_light, sphere_light\n"
+        "                   and tube_light against Monte Carlo of the real GGX, --spp / 2 iterations):\n"
+        "                   shapes_ltc.png, shapes_reference.png, shapes_error.png and their\n"
+        "                   statistics, printed last\n"
         "  --help, -h       this text\n"
         "\n"
         "Floor: stripes dielectric | gold | dielectric | copper (left to right), crossed by bands of\n"

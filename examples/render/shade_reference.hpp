@@ -12,11 +12,12 @@
 #include "math.hpp"
 #include "scene.hpp"
 
-#include <ltc/core/polygon.hpp>
 #include <ltc/brdf/ggx.hpp>
+#include <ltc/core/form_factor.hpp>
+#include <ltc/core/polygon.hpp>
 #include <ltc/reference/ground_truth.hpp>
 #include <ltc/reference/textured_ground_truth.hpp>
-#include <ltc/shading/polygon_light.hpp>
+#include <ltc/shading/shading_frame.hpp>
 
 #include <glm/glm.hpp>
 

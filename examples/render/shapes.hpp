@@ -1,8 +1,9 @@
 // render/shapes.hpp -- the lights of --shapes: a one-sided disk (facing the floor and the camera),
 // a sphere and a tube (an open cylinder, glowing all around) above the floor, in front of the
 // polygonal lights; and one pixel of their two renders:
-//   LTC        ltc::shade_disk_light, ltc::shade_sphere_light, ltc::shade_tube_light (float; the
-//              GGX table, Schlick's Fresnel through its magnitude and fresnel terms; specular and
+//   LTC        ltc::shade<ltc::ggx::one_lobe> with an ltc::disk_light (one-sided), an
+//              ltc::sphere_light and an ltc::tube_light, each built once (float; the one-lobe GGX
+//              table, Schlick's Fresnel through its magnitude and fresnel terms; specular and
 //              diffuse);
 //   reference  Monte Carlo of the real GGX (double) by ltc/reference/shape_ground_truth.hpp, as
 //              shade_reference.hpp does for the polygons: the specular radiance with Schlick's
@@ -11,8 +12,9 @@
 //              alpha = roughness^2, the table's convention). The diffuse term is a third Monte
 //              Carlo integral, D = int cos / pi over the shape (lambert_model below; only where
 //              albedo > 0): for the tube the LTC's diffuse is not exact (the ribbon's ends, see
-//              ltc/shading/tube_light.hpp), so a closed form would not measure it. BRDF and light
-//              sampling, balance heuristic; each pixel, shape and integral has its own seed.
+//              ltc/shading/lights/tube_light.hpp), so a closed form would not measure it. BRDF
+//              and light sampling, balance heuristic; each pixel, shape and integral has its own
+//              seed.
 // The shapes are not drawn as emitters and cast no shadows: the camera's floor pixels are those
 // of the default render, lit by the three shapes only.
 #pragma once
@@ -25,9 +27,11 @@
 
 #include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/shape_ground_truth.hpp>
-#include <ltc/shading/disk_light.hpp>
-#include <ltc/shading/sphere_light.hpp>
-#include <ltc/shading/tube_light.hpp>
+#include <ltc/shading/ggx_models.hpp>
+#include <ltc/shading/lights/disk_light.hpp>
+#include <ltc/shading/lights/sphere_light.hpp>
+#include <ltc/shading/lights/tube_light.hpp>
+#include <ltc/shading/shade.hpp>
 
 #include <glm/glm.hpp>
 
@@ -38,7 +42,8 @@
 
 namespace render {
 
-/// The three shape lights (world space, z up).
+/// The three shape lights (world space, z up): their geometry (which the reference integrates) and
+/// the library's lights built from it once (which the LTC render shades).
 struct shape_lights {
     static constexpr int count = 3;
     const char* names[count] = {"disk", "sphere", "tube"};
@@ -55,23 +60,21 @@ struct shape_lights {
     vec3 tube_p0{1.3f, 3.0f, 0.5f}, tube_p1{2.9f, 3.4f, 0.7f};
     float tube_radius = 0.06f;
     vec3 tube_radiance = vec3(0.55f, 0.75f, 1.00f) * 40.0f;
+    // The same three as the library's lights (after the members above, which they are built from).
+    ltc::disk_light<float> disk =
+        ltc::disk_light<float>::one_sided(disk_centre, disk_normal, disk_radius, disk_radiance);
+    ltc::sphere_light<float> sphere{sphere_centre, sphere_radius, sphere_radiance};
+    ltc::tube_light<float> tube{tube_p0, tube_p1, tube_radius, tube_radiance};
 };
 
 /// Radiance of one floor pixel from shape k (0 disk, 1 sphere, 2 tube): LTC (float).
 inline vec3 shade_ltc_shape(const scene& s, const shape_lights& L, const pixel_hit& hit, int k) {
     if (hit.kind != pixel_hit::floor) return vec3(0.0f);
     const material& m = s.materials[static_cast<std::size_t>(hit.material)];
-    const vec3 N(0, 0, 1);
-    ltc::polygon_light_result<float> r;
-    if (k == 0)
-        r = ltc::shade_disk_light(hit.p, N, hit.v, m.roughness, m.f0, m.albedo, L.disk_radiance, L.disk_centre,
-                                  L.disk_normal, L.disk_radius, ltc::sidedness::one_sided);
-    else if (k == 1)
-        r = ltc::shade_sphere_light(hit.p, N, hit.v, m.roughness, m.f0, m.albedo, L.sphere_radiance, L.sphere_centre,
-                                    L.sphere_radius);
-    else
-        r = ltc::shade_tube_light(hit.p, N, hit.v, m.roughness, m.f0, m.albedo, L.tube_radiance, L.tube_p0, L.tube_p1,
-                                  L.tube_radius);
+    const ltc::surface<float> point{hit.p, vec3(0, 0, 1), hit.v, m.roughness, m.f0, m.albedo};
+    const ltc::shading_result<float> r = k == 0   ? ltc::shade<ltc::ggx::one_lobe>(point, L.disk)
+                                         : k == 1 ? ltc::shade<ltc::ggx::one_lobe>(point, L.sphere)
+                                                  : ltc::shade<ltc::ggx::one_lobe>(point, L.tube);
     return r.specular + r.diffuse;
 }
 

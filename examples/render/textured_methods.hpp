@@ -12,7 +12,7 @@
 #include "scene.hpp"
 #include "shade_ltc.hpp"
 
-#include <ltc/shading/textured_light.hpp>
+#include <ltc/shading/lights/textured_quad_light.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -62,20 +62,23 @@ inline double textured_seconds(const std::vector<textured_run>& runs) {
     return runs.empty() ? 0.0 : runs[0].seconds;
 }
 
-/// Each run's LTC render of the textured light, timed as the best of 5 runs.
+/// Each run's LTC render of the textured light (its ltc::textured_quad_light built once), timed as
+/// the best of 5 runs; runs is empty without the textured light (make_textured_runs).
 inline void render_textured_runs(const scene& s, const std::vector<pixel_hit>& hits, int W, int H, unsigned threads,
                                  std::vector<textured_run>& runs) {
-    for (textured_run& r : runs)
+    for (textured_run& r : runs) {
+        const ltc::textured_quad_light<float> light = ltc_textured_light(*s.textured, r.policy);  // once per method
         for (int run = 0; run < 5; ++run) {
             const auto t0 = clock_type::now();
             for_each_row(H, threads, [&](int y) {
                 for (int x = 0; x < W; ++x) {
                     const std::size_t i = static_cast<std::size_t>(y) * W + x;
-                    r.ltc[i] = dvec3(shade_ltc_textured(s, hits[i], r.policy));
+                    r.ltc[i] = dvec3(shade_ltc_textured(s, light, hits[i]));
                 }
             });
             r.seconds = std::min(r.seconds, seconds_since(t0));
         }
+    }
 }
 
 /// --textured-method all: each method's LTC time for the textured light and its ratio to fetch's.

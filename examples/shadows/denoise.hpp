@@ -43,7 +43,7 @@
 #include "scene.hpp"
 #include "shade_mis.hpp"  // shaded_pixel
 
-#include <ltc/shading/shadowed_polygon_light.hpp>
+#include <ltc/shading/shade_shadowed.hpp>
 
 #include <glm/glm.hpp>
 

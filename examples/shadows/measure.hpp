@@ -67,6 +67,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
     const bool penumbra = filter.penumbra_at(radius);  // (d) records its blockers for penumbra_radii
     const std::uint64_t run =
         mix_seed(mix_seed(seed, static_cast<std::uint64_t>(seeded_as)), static_cast<std::uint64_t>(spp));
+    const ltc::polygon_light<float> light = ltc_light(s);  // once, for every pixel and run
     std::vector<shaded_pixel> px(count);
     method_image r;
     r.seconds = r.cpu_seconds = 1e300;
@@ -80,7 +81,7 @@ inline method_image render_method(const scene& s, const tracer& tr, const std::v
                 for (int x = 0; x < W; ++x) {
                     const std::size_t i = static_cast<std::size_t>(y) * W + x;
                     const pixel_points points{screen_points && which != method::mis, x, y, mix_seed(run, 0x5C2EE7u)};
-                    px[i] = shade(s, tr, hits[i], which, spp, mix_seed(run, i), lobes, points, penumbra);
+                    px[i] = shade(s, light, tr, hits[i], which, spp, mix_seed(run, i), lobes, points, penumbra);
                 }
             },
             label);

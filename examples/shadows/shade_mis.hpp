@@ -23,7 +23,8 @@
 #include <ltc/brdf/ggx.hpp>
 #include <ltc/reference/splitmix64.hpp>
 #include <ltc/shading/shading_frame.hpp>
-#include <ltc/shading/shadowed_polygon_light.hpp>
+#include <ltc/shading/shade_shadowed.hpp>  // ratio_estimates, blocker_estimates
+#include <ltc/shading/surface.hpp>         // shading_result
 
 #include <glm/glm.hpp>
 
@@ -47,7 +48,7 @@ struct shaded_pixel {
     // The ratio methods' analytic terms and their estimates (each term's two sums and analytic
     // value; the specular term's also for Schlick's part), of the first call for (a+) (read by
     // (d)'s filter only: denoise.hpp).
-    ltc::polygon_light_result<double> analytic;
+    ltc::shading_result<double> analytic;
     ltc::ratio_estimates<double> specular_estimates, diffuse_estimates, specular_fresnel_estimates;
     // (d) with --filter-radius penumbra: its occluded samples' blockers, the library's sums of
     // t_b / (t_l - t_b) and their count (denoise.hpp's penumbra_radii).

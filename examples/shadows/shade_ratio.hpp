@@ -22,7 +22,8 @@
 // screen_order.hpp; (a+)'s second call random), with --pixel-points random independent per pixel.
 // Visibility: Embree shadow rays (tracer::light_visible, the offsets of tracer.hpp); for (d) with
 // --filter-radius penumbra, closest-hit queries that also give each occluded ray's blocker
-// (tracer::first_occluder, wrapped in ltc::first_hit).
+// (tracer::first_occluder, wrapped in ltc::first_hit). The light is the scene's quad as an
+// ltc::polygon_light, one-sided towards its front, built once per image (ltc_light).
 #pragma once
 
 #include "camera.hpp"
@@ -77,6 +78,12 @@ inline const char* method_label(method m) {
 
 constexpr int adaptive_first = 4;  // (a+)'s K0 (at most K)
 
+/// The library's light for the scene's quad, emitting towards its front: built once and shared by
+/// every pixel; it refers to s.light_vertices (the scene must outlive it).
+inline ltc::polygon_light<float> ltc_light(const scene& s) {
+    return ltc::polygon_light<float>::one_sided(s.light_vertices, 4, s.light_front, s.light_radiance);
+}
+
 /// The material model of the ratio methods' analytic part (--lobes): ltc::ggx::one_lobe,
 /// ltc::ggx::two_lobes or ltc::ggx::ltc_and_cosine.
 enum class analytic_model { one_lobe, two_lobes, ltc_and_cosine };
@@ -84,8 +91,10 @@ enum class analytic_model { one_lobe, two_lobes, ltc_and_cosine };
 /// One call of the library at the pixel: K samples by `sampler`, the lattice rotated at random or,
 /// given screen-ordered points, by the pixel's point of stream 0 with stratified_rotation (the
 /// neighbours' lattices stratified together: ltc/shading/shade_shadowed.hpp), the analytic part
-/// by `model`.
-inline ltc::shadowed_polygon_light_result<float> shade_shadowed_at(const scene& s, const tracer& tr, const pixel_hit& h,
+/// by `model`; `light`: ltc_light(s).
+inline ltc::shadowed_polygon_light_result<float> shade_shadowed_at(const scene& s,
+                                                                  const ltc::polygon_light<float>& light,
+                                                                  const tracer& tr, const pixel_hit& h,
                                                                   ltc::shadow_sampler sampler, int K, analytic_model model,
                                                                   ltc::ground_truth::splitmix64& rng,
                                                                   const pixel_points* points = nullptr,
@@ -102,7 +111,6 @@ inline ltc::shadowed_polygon_light_result<float> shade_shadowed_at(const scene& 
     options.sampler = sampler;
     const vec3 N = h.n;
     const ltc::surface<float> surface{h.p, h.n, h.v, m.roughness, m.f0, m.albedo};
-    const auto light = ltc::polygon_light<float>::one_sided(s.light_vertices, 4, s.light_front, s.light_radiance);
     const auto shade_with = [&](const auto& callback) {
         switch (model) {
             case analytic_model::two_lobes:
@@ -132,9 +140,9 @@ inline bool agreed(const glm::vec3& ratio, const glm::vec3& unshadowed) {
 }
 
 /// Radiance towards the camera at one pixel by (a), (a+) or (b) with K = spp samples.
-inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                                std::uint64_t seed, analytic_model lobes, const pixel_points& points,
-                                bool record_blockers = false) {
+inline shaded_pixel shade_ratio(const scene& s, const ltc::polygon_light<float>& light, const tracer& tr,
+                                const pixel_hit& h, method which, int spp, std::uint64_t seed, analytic_model lobes,
+                                const pixel_points& points, bool record_blockers = false) {
     shaded_pixel out;
     if (h.kind == pixel_hit::emitter_front) out.radiance = dvec3(s.light_radiance);
     if (!h.shaded() || spp <= 0) return out;
@@ -142,7 +150,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     const auto sampler = which == method::ratio_area ? ltc::shadow_sampler::light_area : ltc::shadow_sampler::ltc_polygon;
     const int first = which == method::ratio_ltc_adaptive ? std::min(spp, adaptive_first) : spp;
     const ltc::shadowed_polygon_light_result<float> r =
-        shade_shadowed_at(s, tr, h, sampler, first, lobes, rng, &points, record_blockers);
+        shade_shadowed_at(s, light, tr, h, sampler, first, lobes, rng, &points, record_blockers);
     out.radiance = dvec3(r.ratio.specular + r.ratio.diffuse);
     out.rays = r.rays;
     out.analytic = {dvec3(r.unshadowed.specular), dvec3(r.unshadowed.diffuse)};
@@ -156,7 +164,7 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
     if (which != method::ratio_ltc_adaptive || (agreed(r.ratio.specular, r.unshadowed.specular) &&
                                                 agreed(r.ratio.diffuse, r.unshadowed.diffuse)))
         return out;
-    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed_at(s, tr, h, sampler, spp, lobes, rng);
+    const ltc::shadowed_polygon_light_result<float> more = shade_shadowed_at(s, light, tr, h, sampler, spp, lobes, rng);
     const double w = static_cast<double>(first) / static_cast<double>(first + spp);
     out.radiance = w * out.radiance + (1.0 - w) * dvec3(more.ratio.specular + more.ratio.diffuse);
     out.rays += more.rays;
@@ -164,13 +172,14 @@ inline shaded_pixel shade_ratio(const scene& s, const tracer& tr, const pixel_hi
 }
 
 /// One pixel by any method, before (d)'s and (e)'s filter: K = spp samples for (a), (a+), (b) and
-/// (d), spp MIS iterations (one BRDF and one light sample each) for (c) and (e).
-inline shaded_pixel shade(const scene& s, const tracer& tr, const pixel_hit& h, method which, int spp,
-                          std::uint64_t seed, analytic_model lobes, const pixel_points& points,
+/// (d), spp MIS iterations (one BRDF and one light sample each) for (c) and (e); `light`:
+/// ltc_light(s), for the ratio methods.
+inline shaded_pixel shade(const scene& s, const ltc::polygon_light<float>& light, const tracer& tr, const pixel_hit& h,
+                          method which, int spp, std::uint64_t seed, analytic_model lobes, const pixel_points& points,
                           bool record_blockers = false) {
     if (which == method::mis || which == method::mis_denoised) return shade_mis(s, tr, h, spp, seed, points);
-    return shade_ratio(s, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed, lobes,
-                       points, record_blockers && which == method::ratio_ltc_denoised);
+    return shade_ratio(s, light, tr, h, which == method::ratio_ltc_denoised ? method::ratio_ltc : which, spp, seed,
+                       lobes, points, record_blockers && which == method::ratio_ltc_denoised);
 }
 
 }  // namespace shadows
