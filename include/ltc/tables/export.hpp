@@ -109,6 +109,15 @@ inline std::uint16_t float_to_half(float x) {
     return static_cast<std::uint16_t>(sign | h);
 }
 
+/// How many of a texture's values float_to_half turns into infinity (|v| >= 65520; NaN not
+/// counted): a float16 file of a texture with any holds infinities where the table has large
+/// matrix entries (a lobe that is nearly a delta), which a shader would propagate.
+inline std::size_t half_overflows(const rgba_texture& t) {
+    std::size_t n = 0;
+    for (float v : t.texels) n += (v >= 65520.0f || v <= -65520.0f) ? 1u : 0u;
+    return n;
+}
+
 /// The float of a half (exact: every half is a float).
 inline float half_to_float(std::uint16_t h) {
     const std::uint32_t sign = static_cast<std::uint32_t>(h & 0x8000u) << 16;
