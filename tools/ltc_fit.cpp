@@ -82,11 +82,7 @@ arguments parse(int argc, char** argv) {
     using ltc_examples::option_status;
     arguments a;
     const auto help = [](const char*) { std::cout << usage_text; };
-    const auto flag = [&](const std::string& name) {
-        if (name != "--quiet" && name != "-q") return false;
-        a.quiet = true;
-        return true;
-    };
+    const auto flag = ltc_examples::quiet_flag(a.quiet);
     const auto option = [&](const std::string& name, const ltc_examples::option_value& v) {
         if (name == "--brdf") {
             a.brdf = v.text;

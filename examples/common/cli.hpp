@@ -83,6 +83,15 @@ inline option_status parse_image_option(const std::string& name, const option_va
     return option_status::taken;
 }
 
+/// The flag argument of parse_options for a program whose only flag is --quiet (or -q): sets quiet.
+inline auto quiet_flag(bool& quiet) {
+    return [&quiet](const std::string& name) {
+        if (name != "--quiet" && name != "-q") return false;
+        quiet = true;
+        return true;
+    };
+}
+
 /// Parses argv: --help or -h calls help(argv[0]) (which prints on stdout) and returns 1;
 /// flag(name) takes an option without a value (and says whether it did); any other option is
 /// "--name value" or "--name=value", given to option(name, value) (an option_status; where the
