@@ -96,86 +96,54 @@ std::vector<node_result> fit_row(int a, const node_result& normal_incidence, con
     return row;
 }
 
-/// Fits the whole size x size table on options::threads threads (see the file comment).
-template <template <typename> class Brdf>
-table fit_table(const options& opt, const progress_callback& progress = {}) {
-    if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_table: size must be at least 2");
-    const int n = opt.size;
-    table tab;
-    tab.size = n;
-    tab.nodes.resize(std::size_t(n) * std::size_t(n));
-    const std::size_t total = tab.nodes.size();
+namespace detail {
 
-    std::atomic<std::size_t> done{0};
-    std::atomic<int> next_row{0};
+/// The fitters' threads: runs body(i) on each of min(options::threads or the hardware's, max_threads)
+/// threads while the calling thread calls progress(done, total) about every
+/// options::progress_interval seconds, and once more after joining them. The first exception
+/// stops the fit: body catches its own and passes them to fail() (which records the current
+/// exception and tells the other threads to stop), as do a thread that cannot be started and a
+/// throwing progress callback; failed() says whether one was recorded (then progress is no longer
+/// called). The caller rethrows the recorded exception.
+template <typename Body, typename Fail, typename Failed>
+void run_fit_threads(const options& opt, int max_threads, const Body& body, const progress_callback& progress,
+                     const std::atomic<std::size_t>& done, std::size_t total, const Fail& fail, const Failed& failed) {
+    unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min<unsigned>(threads, unsigned(std::max(max_threads, 1)));
     std::mutex mutex;
     std::condition_variable finished;
-    int running = 0;
-    std::exception_ptr failure;
-
-    // The callback runs on this thread only; if it throws, the workers stop after their current
-    // row and the exception is rethrown once they have joined.
+    int running = 0;  // threads started and not yet returned
     const auto report = [&] {
-        if (!progress) return;
-        {
-            std::lock_guard<std::mutex> lock(mutex);
-            if (failure) return;
-        }
+        if (!progress || failed()) return;
         try {
             progress(done.load(), total);
         } catch (...) {
-            std::lock_guard<std::mutex> lock(mutex);
-            if (!failure) failure = std::current_exception();
-            next_row.store(n);
+            fail();
         }
     };
-
-    unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = std::min<unsigned>(threads, unsigned(n));
-
-    // Phase 1, sequential: the normal-incidence chain (one-parameter fits, cheap).
-    const std::vector<node_result> normal = fit_normal_incidence<Brdf>(opt);
-    done += std::size_t(n);
-    report();
-
-    // Phase 2: rows in parallel, each a deterministic function of its normal-incidence node.
-    const auto worker = [&] {
-        try {
-            for (;;) {
-                const int a = next_row.fetch_add(1);
-                if (a >= n) break;
-                node_result* row = &tab.nodes[std::size_t(a) * std::size_t(n)];
-                fit_row<Brdf>(a, normal[std::size_t(a)], opt, row, [&](int) { done.fetch_add(1); });
-            }
-        } catch (...) {
-            std::lock_guard<std::mutex> lock(mutex);
-            if (!failure) failure = std::current_exception();
-            next_row.store(n);
-        }
+    const auto thread_body = [&](unsigned i) {
+        body(i);
         std::lock_guard<std::mutex> lock(mutex);
         --running;
         finished.notify_all();
     };
     std::vector<std::thread> pool;
     pool.reserve(threads);
-    try {
-        for (unsigned i = 0; i < threads; ++i) {
+    for (unsigned i = 0; i < threads; ++i) {
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            ++running;
+        }
+        try {
+            pool.emplace_back(thread_body, i);
+        } catch (...) {  // not started: stop the others, which are waited for below
             {
                 std::lock_guard<std::mutex> lock(mutex);
-                ++running;
-            }
-            try {
-                pool.emplace_back(worker);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(mutex);
                 --running;
-                throw;
             }
+            fail();
+            break;
         }
-    } catch (...) {  // a thread could not be started: stop the others, then report
-        next_row.store(n);
-        for (std::thread& t : pool) t.join();
-        throw;
     }
     {
         std::unique_lock<std::mutex> lock(mutex);
@@ -189,8 +157,56 @@ table fit_table(const options& opt, const progress_callback& progress = {}) {
         }
     }
     for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
     report();
+}
+
+}  // namespace detail
+
+/// Fits the whole size x size table on options::threads threads (see the file comment).
+template <template <typename> class Brdf>
+table fit_table(const options& opt, const progress_callback& progress = {}) {
+    if (opt.size < 2) throw std::invalid_argument("ltc::fit::fit_table: size must be at least 2");
+    const int n = opt.size;
+    table tab;
+    tab.size = n;
+    tab.nodes.resize(std::size_t(n) * std::size_t(n));
+    const std::size_t total = tab.nodes.size();
+
+    std::atomic<std::size_t> done{0};
+    std::atomic<int> next_row{0};
+    std::mutex mutex;
+    std::exception_ptr failure;
+    // The first exception stops the rows after the current ones (detail::run_fit_threads).
+    const auto fail = [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        next_row.store(n);
+    };
+    const auto failed = [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return failure != nullptr;
+    };
+
+    // Phase 1, sequential: the normal-incidence chain (one-parameter fits, cheap).
+    const std::vector<node_result> normal = fit_normal_incidence<Brdf>(opt);
+    done += std::size_t(n);
+    if (progress) progress(done.load(), total);
+
+    // Phase 2: rows in parallel, each a deterministic function of its normal-incidence node.
+    const auto worker = [&](unsigned) {
+        try {
+            for (;;) {
+                const int a = next_row.fetch_add(1);
+                if (a >= n) break;
+                node_result* row = &tab.nodes[std::size_t(a) * std::size_t(n)];
+                fit_row<Brdf>(a, normal[std::size_t(a)], opt, row, [&](int) { done.fetch_add(1); });
+            }
+        } catch (...) {
+            fail();
+        }
+    };
+    detail::run_fit_threads(opt, n, worker, progress, done, total, fail, failed);
+    if (failure) std::rethrow_exception(failure);
     return tab;
 }
 

@@ -33,7 +33,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
@@ -505,10 +504,9 @@ two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two
     const bool with_cosine = model == two_lobe_model::ltc_and_cosine;
 
     std::mutex mutex;
-    std::condition_variable chain_advanced, finished;
+    std::condition_variable chain_advanced;
     int chain_at = n;  // the nodes (a, 0) with a >= chain_at are fitted
     bool stop = false;
-    int running = 0;  // threads started and not yet finished
     std::exception_ptr failure;
     std::atomic<int> next_row{n - 1};  // rows are taken downwards, in the chain's order
     std::atomic<std::size_t> done{0};  // nodes fitted
@@ -574,67 +572,16 @@ two_lobe_table fit_two_lobe_table(const options& opt, two_lobe_model model = two
             fail();
         }
     };
-    const auto thread_body = [&](bool runs_chain) {
-        if (runs_chain) chain();
-        worker();
+    const auto failed = [&] {
         std::lock_guard<std::mutex> lock(mutex);
-        --running;
-        finished.notify_all();
+        return failure != nullptr;
     };
-    // The callback runs on this thread only (see the comment above).
-    const auto report = [&] {
-        if (!progress) return;
-        {
-            std::lock_guard<std::mutex> lock(mutex);
-            if (failure) return;
-        }
-        try {
-            progress(done.load(), total);
-        } catch (...) {
-            fail();
-        }
+    // Thread 0 runs the chain before it takes rows too.
+    const auto body = [&](unsigned i) {
+        if (i == 0) chain();
+        worker();
     };
-
-    unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = std::min<unsigned>(threads, unsigned(n));
-    std::vector<std::thread> pool;
-    pool.reserve(threads);
-    try {
-        for (unsigned i = 0; i < threads; ++i) {
-            {
-                std::lock_guard<std::mutex> lock(mutex);
-                ++running;
-            }
-            try {
-                pool.emplace_back(thread_body, i == 0);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(mutex);
-                --running;
-                throw;
-            }
-        }
-    } catch (...) {  // a thread could not be started: stop the others, then report
-        fail();
-        for (std::thread& t : pool) t.join();
-        std::rethrow_exception(failure);
-    }
-    {
-        std::unique_lock<std::mutex> lock(mutex);
-        if (!progress) {
-            finished.wait(lock, [&] { return running == 0; });
-        } else {
-            const auto interval = std::chrono::duration<double>(std::max(opt.progress_interval, 0.001));
-            while (running > 0) {
-                finished.wait_for(lock, interval);
-                if (running == 0) break;
-                lock.unlock();
-                report();
-                lock.lock();
-            }
-        }
-    }
-    for (std::thread& t : pool) t.join();
-    report();
+    detail::run_fit_threads(opt, n, body, progress, done, total, fail, failed);
     if (failure) std::rethrow_exception(failure);
     return tab;
 }

@@ -53,17 +53,6 @@ struct shading_point {
     glm::vec<3, T> albedo{T(0)};
 };
 
-/// The shading of a lobe set (one overload per set): the specular and diffuse terms of the file's
-/// first comment, with I_lobe the lobe's integral over the light (eq. 3 through the LTC's M^-1)
-/// and E the clamped cosine's (eq. 11), both with the light's facing applied, and L the light's
-/// radiance.
-///
-/// The light interface. A light type (ltc/shading/lights/) provides, in the shading frame at P:
-///   integrals<Policy>(frame, P, m_inv, options)  -> {form_factor, ltc}: E and the LTC integral
-///   ltc_integral<Policy>(frame, P, m_inv, options) -> the LTC integral alone (a further lobe)
-///   emitted(scale, integral)                      -> the radiance that scale x integral stands for
-/// (constant lights: radiance * scale * integral; textured ones integrate the colour themselves).
-/// Policy is the edge_policy of the polygon integrals (ltc/core/edge_policy.hpp).
 namespace detail {
 /// One LTC's specular term and the diffuse term: shade_lobes of lobes::one, the first lobe of lobes::two.
 template <typename Policy, typename T, typename Light>
@@ -77,6 +66,17 @@ LTC_HOST_DEVICE inline shading_result<T> shade_ltc(const shading_point<T>& p, co
 }
 }  // namespace detail
 
+/// The shading of a lobe set (one overload per set): the specular and diffuse terms of the file's
+/// first comment, with I_lobe the lobe's integral over the light (eq. 3 through the LTC's M^-1)
+/// and E the clamped cosine's (eq. 11), both with the light's facing applied, and L the light's
+/// radiance.
+///
+/// The light interface. A light type (ltc/shading/lights/) provides, in the shading frame at P:
+///   integrals<Policy>(frame, P, m_inv, options)  -> {form_factor, ltc}: E and the LTC integral
+///   ltc_integral<Policy>(frame, P, m_inv, options) -> the LTC integral alone (a further lobe)
+///   emitted(scale, integral)                      -> the radiance that scale x integral stands for
+/// (constant lights: radiance * scale * integral; textured ones integrate the colour themselves).
+/// Policy is the edge_policy of the polygon integrals (ltc/core/edge_policy.hpp).
 template <typename Policy, typename T, typename Light>
 LTC_HOST_DEVICE inline shading_result<T> shade_lobes(const shading_point<T>& p, const lobes::one<T>& c, const Light& light,
                                      const shade_options& o) {
