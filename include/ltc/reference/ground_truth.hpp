@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 LTC_NAMESPACE_BEGIN
@@ -94,7 +95,26 @@ struct estimate {
 /// 5e-5 sr triangle of the tests), which the standard error does not include.
 template <typename Model>
 estimate integrate(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3* vertices,
-                   std::size_t n, const options& opt = {}) {
+                   std::size_t n, const options& opt = {});
+
+/// The same for a model whose parameter is not a scalar, such as brdf::ggx_anisotropic<double>
+/// with brdf::anisotropic_alpha<double>{alpha_x, alpha_y}: alpha goes to eval, pdf and sample as
+/// given. (Scalar alphas take the overload above, unchanged.)
+template <typename Model, typename Alpha,
+          typename = std::enable_if_t<!std::is_convertible<const Alpha&, double>::value>>
+estimate integrate(const Model& model, const glm::dvec3& V, const Alpha& alpha, const glm::dvec3* vertices,
+                   std::size_t n, const options& opt = {});
+
+}  // namespace ground_truth
+
+namespace detail {
+
+/// ground_truth::integrate for a model parameter alpha of any type.
+template <typename Model, typename Alpha>
+ground_truth::estimate integrate_polygon_mis(const Model& model, const glm::dvec3& V, const Alpha& alpha,
+                                             const glm::dvec3* vertices, std::size_t n,
+                                             const ground_truth::options& opt) {
+    using namespace ground_truth;  // options, estimate, spherical_polygon, splitmix64, ...
     const spherical_polygon poly(vertices, n);
     estimate e;
     if (poly.empty()) return e;  // no solid angle: the integral is 0
@@ -154,6 +174,22 @@ estimate integrate(const Model& model, const glm::dvec3& V, double alpha, const 
             break;
     }
     return e;
+}
+
+}  // namespace detail
+
+namespace ground_truth {
+
+template <typename Model>
+estimate integrate(const Model& model, const glm::dvec3& V, double alpha, const glm::dvec3* vertices,
+                   std::size_t n, const options& opt) {
+    return detail::integrate_polygon_mis(model, V, alpha, vertices, n, opt);
+}
+
+template <typename Model, typename Alpha, typename>
+estimate integrate(const Model& model, const glm::dvec3& V, const Alpha& alpha, const glm::dvec3* vertices,
+                   std::size_t n, const options& opt) {
+    return detail::integrate_polygon_mis(model, V, alpha, vertices, n, opt);
 }
 
 }  // namespace ground_truth
