@@ -17,7 +17,7 @@
 //   ltc/core/       the paper's mathematics: the original distributions, transformed<>, the
 //                   polygon machinery (horizon clipping, edge terms, form factors, solid angles),
 //                   the integrals over lines and ellipses (disks), the samplers of polygons;
-//   ltc/brdf/       the BRDF models (GGX, Beckmann, Schlick's Fresnel);
+//   ltc/brdf/       the BRDF models (GGX, anisotropic GGX, Beckmann, Schlick's Fresnel);
 //   ltc/tables/     the table format (ltc_table) and the generated GGX tables;
 //   ltc/shading/    what a renderer shades with: polygonal (also shadowed), textured, disk,
 //                   sphere, line and tube lights, the tables' fetches, structure-of-arrays batches;
@@ -45,6 +45,7 @@
 
 #include <ltc/brdf/model.hpp>
 #include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/ggx_anisotropic.hpp>
 #include <ltc/brdf/beckmann.hpp>
 #include <ltc/brdf/schlick.hpp>
 
