@@ -39,6 +39,10 @@
 // LTC_INLINE marks the small functions of the integration hot path: GCC otherwise declines to
 // inline some of them, and a call per vertex and per edge costs more than the math.
 // LTC_NOINLINE keeps rare slow paths (rescaling of huge or tiny vectors) out of the hot code.
+// LTC_NO_FORCE_INLINE makes LTC_INLINE a plain inline, for builds where compile time matters more
+// than speed (the library's own unit tests): every call site of a forced-inline function gets its
+// own copy of the whole integration. It changes no formula (ltc::ltc compiles without FP
+// contraction, so inlining cannot fuse operations), so it takes no part in the ABI name.
 #if defined(__GNUC__) || defined(__clang__)
 #define LTC_INLINE inline __attribute__((always_inline))
 #define LTC_NOINLINE __attribute__((noinline))
@@ -48,4 +52,8 @@
 #else
 #define LTC_INLINE inline
 #define LTC_NOINLINE
+#endif
+#if defined(LTC_NO_FORCE_INLINE)
+#undef LTC_INLINE
+#define LTC_INLINE inline
 #endif

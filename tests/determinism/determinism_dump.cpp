@@ -1,8 +1,8 @@
 // The scalar paths' outputs over fixed random inputs, as raw bits: every build of this file (with
-// and without LTC_NO_SIMD, with -march=x86-64-v3, with another compiler) must write the same
-// bytes (tests/determinism/compare.cmake). Covers the float and double integrals of core/ (quads on
-// their fast path, n-gons, one- and two-sided, every symmetric edge policy, solid angles, lines,
-// disks) and the scalar shading of every light shape with each of the three GGX tables.
+// and without LTC_NO_SIMD, without forced inlining, with -march=x86-64-v3, with another compiler)
+// must write the same bytes (tests/determinism/compare.cmake). Covers the float and double
+// integrals of core/ (quads on their fast path, n-gons, one- and two-sided, every symmetric edge
+// policy, solid angles, lines, disks) and the scalar shading of every light shape with each of the three GGX tables.
 //
 //   determinism_dump <file>      exit 0; 77 where built for x86-64-v3 and the CPU lacks it
 #include <ltc/ltc.hpp>
