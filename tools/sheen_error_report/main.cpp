@@ -3,10 +3,11 @@
 // from the real integral of KHR_materials_sheen's Charlie BRDF (ltc/brdf/charlie.hpp), and what
 // the fit's objective and the table's size change.
 //
-//   sheen_error_report [--fits l3,integrals,combined,l3@32,integrals@32] [--target 0.002]
+//   sheen_error_report [--fits l3,integrals,combined,combined@32] [--target 0.002]
 //                      [--threads K] [--list]
 //
-// (--fits none leaves section 4 out; about a minute on 2 cores, plus 10-30 s per fit.)
+// (--fits none leaves section 4 out; about a minute on 2 cores, plus 10-40 s per fit: docs/results/
+// sheen_error.md is the default run, tools/results.sh.)
 //
 // The grid is ggx_error_report's (tools/ggx_error_report/grid.hpp: theta_v 0, 30, 60, 80 deg x
 // roughness 0.1, 0.25, 0.5, 0.75, 1 (alpha = roughness^2, the sheen roughness of the spec) x
@@ -150,10 +151,10 @@ void print_help(const char* argv0) {
         "ltc::sheen::charlie) against Monte Carlo ground truth of the Charlie BRDF over ggx_error_report's\n"
         "grid of 720 lights, counting those that give at least 5 percent of the albedo; then tables fitted\n"
         "here with each objective (the file comment of tools/sheen_error_report/main.cpp).\n"
-        "About a minute on 2 cores, plus 10-30 s per fit.\n"
+        "About a minute on 2 cores, plus 10-40 s per fit.\n"
         "\n"
         "  --fits LIST     section 4's tables: l3, integrals or combined, each optionally @N for an N x N\n"
-        "                  table (default l3,integrals,combined,l3@32,integrals@32; none: no section 4)\n"
+        "                  table (default l3,integrals,combined,combined@32; none: no section 4)\n"
         "  --target T      ground truth's relative standard error, 0 .. 1 (default 0.002)\n"
         "  --threads K     worker threads (default: all hardware threads)\n"
         "  --list          also print every significant configuration (default off)\n"
@@ -165,7 +166,7 @@ void print_help(const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<std::string> fits = {"l3", "integrals", "combined", "l3@32", "integrals@32"};
+    std::vector<std::string> fits = {"l3", "integrals", "combined", "combined@32"};
     double target = 0.002;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     bool list = false;
