@@ -3,6 +3,8 @@
 //
 //   ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp
 //
+// (and the others: the command in each table's own header comment, or ltc_fit --help)
+//
 // The fit is ltc::fit::fit_table (include/ltc/fitting/fit_table.hpp; ltc/fitting/fit.hpp gives an
 // overview of the method) and the text is ltc::fit::table_header_text (ltc/fitting/table_writer.hpp);
 // the output depends only on the options that change the fit (--brdf, --size, --objective), never
@@ -11,6 +13,7 @@
 #include "common/progress.hpp"
 
 #include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/charlie.hpp>
 #include <ltc/brdf/ggx.hpp>
 #include <ltc/fitting/fit.hpp>
 #include <ltc/fitting/table_writer.hpp>
@@ -26,7 +29,7 @@
 namespace {
 
 const char* const usage_text =
-    "usage: ltc_fit --brdf ggx|beckmann --out FILE [--size N] [--objective O] [--lobes 1|2|cosine] [--threads K] [--quiet]\n"
+    "usage: ltc_fit --brdf ggx|beckmann|charlie --out FILE [--size N] [--objective O] [--lobes 1|2|cosine] [--threads K] [--quiet]\n"
     "\n"
     "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
     "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
@@ -34,7 +37,8 @@ const char* const usage_text =
     "normalized inverse matrix m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2], the\n"
     "magnitude and the Fresnel term; layout in ltc/tables/ltc_table.hpp).\n"
     "\n"
-    "  --brdf NAME    ggx (GGX, Smith height-correlated) or beckmann; alpha = roughness^2 (required)\n"
+    "  --brdf NAME    ggx (GGX, Smith height-correlated), beckmann, or charlie (the sheen of\n"
+    "                 KHR_materials_sheen, ltc/brdf/charlie.hpp); alpha = roughness^2 (required)\n"
     "  --out FILE     the header to write ('-' for standard output; required); also -o FILE\n"
     "  --size N       nodes per axis (default 64 with one lobe, 32 with two; at least 2)\n"
     "  --objective O  l3 (default: the paper's, the shipped tables), integrals, combined,\n"
@@ -58,7 +62,8 @@ const char* const usage_text =
     "Regenerate the shipped table:\n"
     "  ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp\n"
     "  ltc_fit --brdf ggx --lobes 2 --out include/ltc/tables/ggx_two_lobe.hpp\n"
-    "  ltc_fit --brdf ggx --lobes cosine --out include/ltc/tables/ggx_cosine_lobe.hpp\n";
+    "  ltc_fit --brdf ggx --lobes cosine --out include/ltc/tables/ggx_cosine_lobe.hpp\n"
+    "  ltc_fit --brdf charlie --objective combined --out include/ltc/tables/charlie.hpp\n";
 
 struct arguments {
     std::string brdf;
@@ -113,7 +118,8 @@ arguments parse(int argc, char** argv) {
     };
     if (const int r = ltc_examples::parse_options(argc, argv, help, flag, option); r != 0) std::exit(r == 1 ? 0 : 2);
     if (a.brdf.empty()) fail("--brdf is required");
-    if (a.brdf != "ggx" && a.brdf != "beckmann") fail("unknown BRDF '" + a.brdf + "' (ggx or beckmann)");
+    if (a.brdf != "ggx" && a.brdf != "beckmann" && a.brdf != "charlie")
+        fail("unknown BRDF '" + a.brdf + "' (ggx, beckmann or charlie)");
     if (a.out.empty()) fail("--out is required");
     if (a.lobes == 2 && a.goal != ltc::fit::objective::l3) fail("--objective does not apply to --lobes 2 or cosine");
     if (a.size == 0) a.size = a.lobes == 2 ? ltc::fit::two_lobe_default_size : ltc::fit::options{}.size;
@@ -175,6 +181,8 @@ int main(int argc, char** argv) {
     const arguments args = parse(argc, argv);
     try {
         if (args.brdf == "ggx") return run<ltc::brdf::ggx>(args, "GGX microfacet NDF, Smith height-correlated masking-shadowing");
+        if (args.brdf == "charlie")
+            return run<ltc::brdf::charlie>(args, "Charlie sheen of KHR_materials_sheen (Estevez and Kulla 2017), without the sheen colour");
         return run<ltc::brdf::beckmann>(args, "Beckmann microfacet NDF, Smith height-correlated masking-shadowing");
     } catch (const std::exception& e) {
         std::cerr << "ltc_fit: " << e.what() << "\n";

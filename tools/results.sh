@@ -5,16 +5,35 @@
 # README between the results:summary markers) and docs/results/MANIFEST (the files' SHA-256, which
 # CTest's docs_check compares, so that a figure edited by hand fails).
 #
-#   tools/results.sh [build-dir]      (default: build-results; configured and built here)
+#   tools/results.sh [build-dir] [FILE.md ...]   (default: build-results; configured and built here)
 #
-# About five minutes on 2 cores. Needs Google Benchmark (Debian libbenchmark-dev).
+# With FILEs named (e.g. sheen_error.md), only those are rewritten, with the programs they need;
+# the others keep their contents, and MANIFEST is written over all of them again.
+# About seven minutes on 2 cores. Needs Google Benchmark (Debian libbenchmark-dev).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$root/build-results}
 out=$root/docs/results
 jobs=$(nproc)
+only=("${@:2}")
+wanted() {  # wanted FILE: rewrite FILE this run?
+  [[ ${#only[@]} -eq 0 ]] && return 0
+  local f
+  for f in "${only[@]}"; do [[ "$f" == "$1" ]] && return 0; done
+  return 1
+}
+targets=()
+wanted ggx_error.md && targets+=(ggx_error_report)
+wanted shape_error.md && targets+=(shape_error_report)
+wanted textured_error.md && targets+=(textured_error_report)
+wanted sheen_error.md && targets+=(sheen_error_report)
+{ wanted speed.md || wanted summary.md; } && targets+=(bench_batch bench_shading)
+if [[ ${#targets[@]} -eq 0 ]]; then
+  echo "results: nothing to write (files: ggx_error.md shape_error.md textured_error.md sheen_error.md speed.md summary.md)" >&2
+  exit 2
+fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DLTC_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" -j"$jobs" --target ggx_error_report shape_error_report textured_error_report bench_batch bench_shading
+cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 mkdir -p "$out"
 commit=$(git -C "$root" rev-parse --short HEAD)
 dirty=$(git -C "$root" status --porcelain --untracked-files=no -- include examples benchmarks | head -c1)
@@ -27,17 +46,21 @@ report() {  # report FILE TITLE COMMAND...: the command's output as a text block
   echo "results: $title" >&2
   { echo "# $title"; echo; echo "$stamp"; echo; echo '```text'; "$@"; echo '```'; } >"$out/$file"
 }
-report ggx_error.md "GGX shading against Monte Carlo ground truth (the one-lobe table and the three models of ltc::shade)" \
+wanted ggx_error.md && report ggx_error.md "GGX shading against Monte Carlo ground truth (the one-lobe table and the three models of ltc::shade)" \
   "$build/tools/ggx_error_report" --fit-sizes 0 --objectives none
-report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo ground truth" \
+wanted shape_error.md && report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo ground truth" \
   "$build/tools/shape_error_report"
-report textured_error.md "Textured lights against Monte Carlo ground truth" \
+wanted textured_error.md && report textured_error.md "Textured lights against Monte Carlo ground truth" \
   "$build/tools/textured_error_report"
-echo "results: benchmarks" >&2
-mkdir -p "$build/speed"
-python3 "$root/benchmarks/speed_tables.py" --build "$build" --out "$build/speed" \
-  --image "$build/speed/speed.png" >"$build/speed/tables.md"
-{ echo "# Speed"; echo; echo "$stamp"; echo; cat "$build/speed/tables.md"; } >"$out/speed.md"
-python3 "$root/tools/results_summary.py" --results "$out" --json "$build/speed" --readme "$root/README.md" --stamp "$stamp"
+wanted sheen_error.md && report sheen_error.md "Charlie sheen shading against Monte Carlo ground truth (ltc::sheen::charlie's table and the fit's objectives)" \
+  "$build/tools/sheen_error_report"
+if wanted speed.md || wanted summary.md; then
+  echo "results: benchmarks" >&2
+  mkdir -p "$build/speed"
+  python3 "$root/benchmarks/speed_tables.py" --build "$build" --out "$build/speed" \
+    --image "$build/speed/speed.png" >"$build/speed/tables.md"
+  { echo "# Speed"; echo; echo "$stamp"; echo; cat "$build/speed/tables.md"; } >"$out/speed.md"
+  python3 "$root/tools/results_summary.py" --results "$out" --json "$build/speed" --readme "$root/README.md" --stamp "$stamp"
+fi
 (cd "$out" && sha256sum $(ls *.md | sort) >MANIFEST)
 echo "results: wrote $out" >&2

@@ -17,8 +17,9 @@
 //   ltc/core/       the paper's mathematics: the original distributions, transformed<>, the
 //                   polygon machinery (horizon clipping, edge terms, form factors, solid angles),
 //                   the integrals over lines and ellipses (disks), the samplers of polygons;
-//   ltc/brdf/       the BRDF models (GGX, anisotropic GGX, Beckmann, Schlick's Fresnel);
-//   ltc/tables/     the table format (ltc_table) and the generated GGX tables;
+//   ltc/brdf/       the BRDF models (GGX, anisotropic GGX, Beckmann, Schlick's Fresnel, the
+//                   Charlie sheen);
+//   ltc/tables/     the table format (ltc_table) and the generated GGX and Charlie sheen tables;
 //   ltc/shading/    what a renderer shades with: polygonal (also shadowed), textured, disk,
 //                   sphere, line and tube lights, the tables' fetches, structure-of-arrays batches;
 //   ltc/reference/  Monte Carlo ground truth (umbrella: ltc/reference.hpp);
@@ -47,6 +48,7 @@
 #include <ltc/brdf/ggx.hpp>
 #include <ltc/brdf/ggx_anisotropic.hpp>
 #include <ltc/brdf/beckmann.hpp>
+#include <ltc/brdf/charlie.hpp>
 #include <ltc/brdf/schlick.hpp>
 
 #include <ltc/tables/ltc_table.hpp>
@@ -54,6 +56,8 @@
 #include <ltc/shading/surface.hpp>
 #include <ltc/shading/lobes.hpp>
 #include <ltc/shading/ggx_models.hpp>
+#include <ltc/shading/charlie_fetch.hpp>
+#include <ltc/shading/sheen_models.hpp>
 #include <ltc/shading/shade.hpp>
 #include <ltc/shading/lights/light_error.hpp>
 #include <ltc/shading/lights/polygon_light.hpp>

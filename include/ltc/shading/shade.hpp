@@ -33,8 +33,9 @@ LTC_HOST_DEVICE LTC_INLINE shading_point<T> make_shading_point(const surface<T>&
 /// make_shading_frame), reads the model's lobes at (cos theta_v, roughness) and shades them
 /// against the light (ltc/shading/lobes.hpp: the equations). Lights: polygon_light, disk_light,
 /// sphere_light, line_light, tube_light and textured_quad_light (ltc/shading/lights/). Models:
-/// ltc::ggx::one_lobe, ltc_and_cosine (the default), two_lobes (ltc/shading/ggx_models.hpp), or a
-/// user's own (the model interface there). Bad input: the file's first comment.
+/// ltc::ggx::one_lobe, ltc_and_cosine (the default), two_lobes (ltc/shading/ggx_models.hpp), the
+/// sheen ltc::sheen::charlie (ltc/shading/sheen_models.hpp), or a user's own (the model interface
+/// in ggx_models.hpp). Bad input: the file's first comment.
 /// Policy: the edge terms of the polygon integrals (ltc/core/edge_policy.hpp).
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
 LTC_INLINE shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
