@@ -14,7 +14,7 @@
 // right rotation about z is spent on B[1][0] = 0; the isotropic fitter's matrix is the case
 // m12 = m23 = m32 = 0, a in the xz-plane).
 //
-// Canonical form of the inverse (canonical_inverse), what a table interpolates: of the matrices
+// Canonical form of the inverse (canonical_inverse; a table stores its inverse, canonical_matrix): of the matrices
 // Q m_inv (Q a rotation about z, or a mirror, acting on the rows) of one LTC, the one with
 // det > 0 whose upper-left 2x2 block is symmetric with the largest trace, scaled so that trace
 // is 2. Unique unless that block is 0 (never for an invertible LTC of a lobe above the horizon),
@@ -101,6 +101,16 @@ inline glm::dmat3 canonical_inverse(glm::dmat3 m) {
         r[c][2] = m[c][2];
     }
     return r * (2.0 / h);
+}
+
+/// What a table stores of a canonical inverse m_inv: M = m_inv^-1 scaled to |M e_z| = 1 (Kt et
+/// al.'s normalization: M's third column, the direction of the cosine's peak, is a unit vector).
+/// Interpolating M rather than m_inv (as their shader does) follows the lobe's shape more
+/// linearly between nodes (tools/anisotropic_error_report measures both).
+inline glm::dmat3 canonical_matrix(const glm::dmat3& m_inv) {
+    const glm::dmat3 M = full_inverse(m_inv).inverse;
+    const double l = glm::length(M[2]);
+    return l > 0 ? M * (1.0 / l) : M;
 }
 
 }  // namespace fit

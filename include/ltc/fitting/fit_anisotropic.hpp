@@ -22,7 +22,7 @@
 //   phi_v = pi/2          the phi_v = 0 fit of the swapped BRDF (alpha_y, alpha_x), swapped back
 //   theta_v = 0           2: diag(m11, m22, 1), 1 when alpha_x == alpha_y
 // so that the nodes on the mirror planes are exactly symmetric and the lookup's mirrors are
-// continuous. The stored matrix is canonical_inverse(M^-1).
+// continuous. The stored matrix is canonical_matrix(canonical_inverse(M^-1)).
 //
 // Order (continuation, as the isotropic fit_table): per alpha pair with alpha_x >= alpha_y the
 // normal-incidence node first (from diag(alpha_x, alpha_y, 1)), then for each phi node a chain
@@ -43,6 +43,7 @@
 #include <ltc/detail/math.hpp>
 #include <ltc/fitting/anisotropic_parameters.hpp>
 #include <ltc/fitting/fit_table.hpp>  // progress_callback, detail::run_fit_threads
+#include <ltc/fitting/integral_objective.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>  // normalize_or_zero, sample_cosine
 #include <ltc/fitting/nelder_mead.hpp>
 #include <ltc/fitting/options.hpp>
@@ -81,6 +82,7 @@ struct anisotropic_options {
     double initial_step = 0.1;      ///< simplex size of the first round
     unsigned threads = 0;           ///< worker threads (0: all cores)
     double progress_interval = 0.1; ///< seconds between progress callbacks
+    objective goal = objective::combined;  ///< l3, integrals (anisotropic_polygon_family) or their sum
 };
 
 /// alpha of node i of n: max(i / (n - 1), alpha_min).
@@ -226,7 +228,8 @@ enum class node_symmetry { general, mirror_y, normal };
 
 struct anisotropic_node {
     anisotropic_parameters parameters;  ///< the fit (in the swapped frame for a phi = pi/2 chain)
-    glm::dmat3 m_inv{1.0};              ///< canonical_inverse(M^-1): the stored matrix
+    glm::dmat3 m_inv{1.0};              ///< canonical_inverse(M^-1)
+    glm::dmat3 matrix{1.0};             ///< the stored matrix: m_inv^-1 / |m_inv^-1 e_z|
     double magnitude = 0;               ///< integral of rho cos
     double fresnel = 0;                 ///< integral of rho cos (1 - V.H)^5
     double relative_l1 = 0;             ///< integral |f - m D| / integral f (the fit's estimator)
@@ -274,9 +277,8 @@ inline void anisotropic_to_vector(const anisotropic_parameters& p, int dims, dou
     }
 }
 
-template <std::size_t Dim>
-anisotropic_parameters anisotropic_minimize(const anisotropic_sample_set& samples, double magnitude,
-                                            const anisotropic_parameters& start, double step,
+template <std::size_t Dim, typename Objective>
+anisotropic_parameters anisotropic_minimize(const Objective& objective_of, const anisotropic_parameters& start, double step,
                                             const anisotropic_options& opt, int& evaluations) {
     constexpr int dims = int(Dim);
     std::array<double, Dim> u0{}, steps{};
@@ -289,11 +291,48 @@ anisotropic_parameters anisotropic_minimize(const anisotropic_sample_set& sample
             return std::numeric_limits<double>::infinity();
         const full_inverse_result inv = full_inverse(p.matrix());
         if (!inv.ok) return std::numeric_limits<double>::infinity();
-        return samples.l3(inv.inverse, 1.0 / inv.abs_determinant, magnitude);
+        return objective_of(inv.inverse, 1.0 / inv.abs_determinant);
     };
     const auto r = nelder_mead<Dim>(objective, u0, steps, opt.tolerance, opt.max_evaluations);
     evaluations += r.evaluations;
     return anisotropic_from_vector(r.x.data(), dims, start.axis);
+}
+
+/// The integral objective's polygons for a lobe of average direction `axis` (unit, 3D) and
+/// roughness alpha: integral_objective.hpp's families without the y symmetry.
+///   lobe       radii r_j = r0 (1.2 / r0)^(j / 4), j = 0..4, r0 = clamp(0.35 (alpha_x + alpha_y),
+///              5e-5, 0.3), centred on the axis, and for j < 4 also 2 r_j away from it towards
+///              the normal, the horizon and both sides: 5 + 16 hexagons;
+///   hemisphere radius 0.25 rad at elevations 8, 30 and 55 deg, azimuths 22.5 + 45 k deg
+///              (k = 0..7), and at elevation 85 deg; radius 0.6 rad at elevations 15 and 50
+///              deg, azimuths 60 k deg: 37 hexagons (the lowest ring straddles the horizon).
+inline std::vector<family_polygon> anisotropic_polygon_family(const glm::dvec3& axis, const anisotropic_alpha& alpha) {
+    std::vector<family_polygon> family;
+    const double r0 = std::min(std::max(0.35 * (alpha.x + alpha.y), 5e-5), 0.3);
+    // The frame of the axis: `up` towards the normal, `side` across (a horizontal tangent).
+    const glm::dvec3 h(axis.x, axis.y, 0);
+    const glm::dvec3 side = glm::dot(h, h) > 1e-24 ? normalize_or_zero(glm::dvec3(-axis.y, axis.x, 0)) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 up = glm::cross(side, axis);  // towards +z (or +x... at normal incidence)
+    const auto off_axis = [&](double d, double az) {
+        const glm::dvec3 dir = std::cos(az) * up + std::sin(az) * side;
+        return normalize_or_zero(axis * std::cos(d) + dir * std::sin(d));
+    };
+    for (int j = 0; j < 5; ++j) {
+        const double r = r0 * std::pow(1.2 / r0, j / 4.0);
+        family.push_back(make_hexagon(axis, r));
+        if (j == 4) break;
+        for (int q = 0; q < 4; ++q) family.push_back(make_hexagon(off_axis(2 * r, 0.5 * pi<double>() * q), r));
+    }
+    const auto at = [](double el_deg, double az_deg) {
+        const double e = el_deg * pi<double>() / 180.0, a = az_deg * pi<double>() / 180.0;
+        return glm::dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+    };
+    for (double el : {8.0, 30.0, 55.0})
+        for (int k = 0; k < 8; ++k) family.push_back(make_hexagon(at(el, 22.5 + 45.0 * k), 0.25));
+    family.push_back(make_hexagon(at(85.0, 22.5), 0.25));
+    for (double el : {15.0, 50.0})
+        for (int k = 0; k < 6; ++k) family.push_back(make_hexagon(at(el, 60.0 * k), 0.6));
+    return family;
 }
 
 template <template <typename> class Brdf>
@@ -304,18 +343,42 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
     r.magnitude = mom.magnitude;
     r.fresnel = mom.fresnel;
     anisotropic_sample_set samples;
+    integral_targets targets;
+    if (opt.goal != objective::l3) {
+        const std::vector<family_polygon> family = anisotropic_polygon_family(p.axis, alpha);
+        std::vector<double> g;
+        family_integrals<Brdf>(V, alpha, family, default_brdf_samples, default_polygon_samples, g, nullptr);
+        targets = significant_targets(family, g, mom.magnitude, integral_family::rings().floor);
+    }
     double step = opt.initial_step;
     for (int round = 0; round < std::max(1, opt.rounds); ++round) {
         make_anisotropic_sample_set<Brdf>(V, alpha, p.matrix(), opt.error_samples, samples);
-        if (dims == 7) p = anisotropic_minimize<7>(samples, r.magnitude, p, step, opt, r.evaluations);
-        else if (dims == 4) p = anisotropic_minimize<4>(samples, r.magnitude, p, step, opt, r.evaluations);
-        else if (dims == 2) p = anisotropic_minimize<2>(samples, r.magnitude, p, step, opt, r.evaluations);
-        else p = anisotropic_minimize<1>(samples, r.magnitude, p, step, opt, r.evaluations);
+        double f3 = 1;
+        if (opt.goal == objective::combined) {
+            const full_inverse_result inv = full_inverse(p.matrix());
+            f3 = samples.all(inv.inverse, 1.0 / inv.abs_determinant, r.magnitude).f3;
+            if (!(f3 > 0)) f3 = 1;
+        }
+        // The objective of a candidate m_inv (|det m_inv| = abs_det).
+        const auto objective_of = [&](const glm::dmat3& m_inv, double abs_det) {
+            if (opt.goal == objective::l3) return samples.l3(m_inv, abs_det, r.magnitude);
+            double e = integral_loss(targets, m_inv, r.magnitude);
+            if (opt.goal == objective::combined) {
+                const double l3 = std::cbrt(samples.l3(m_inv, abs_det, r.magnitude) / f3);
+                e += l3 * l3;
+            }
+            return e;
+        };
+        if (dims == 7) p = anisotropic_minimize<7>(objective_of, p, step, opt, r.evaluations);
+        else if (dims == 4) p = anisotropic_minimize<4>(objective_of, p, step, opt, r.evaluations);
+        else if (dims == 2) p = anisotropic_minimize<2>(objective_of, p, step, opt, r.evaluations);
+        else p = anisotropic_minimize<1>(objective_of, p, step, opt, r.evaluations);
         step *= 0.25;
     }
     r.parameters = p;
     const full_inverse_result inv = full_inverse(p.matrix());
     r.m_inv = canonical_inverse(inv.inverse);
+    r.matrix = canonical_matrix(r.m_inv);
     const auto s = samples.all(inv.inverse, 1.0 / inv.abs_determinant, r.magnitude);
     r.relative_l1 = s.f1 > 0 ? s.l1 / s.f1 : 0.0;
     r.relative_l3 = s.f3 > 0 ? std::cbrt(s.l3 / s.f3) : 0.0;
@@ -356,6 +419,14 @@ anisotropic_node fit_anisotropic_node(const glm::dvec3& V, const anisotropic_alp
         if (alt.relative_l1 < r.relative_l1 || !(r.relative_l1 == r.relative_l1)) r = alt;
         else r.evaluations = alt.evaluations;
     }
+    if (opt.goal != objective::l3 && !(r.relative_l1 <= 1.0)) {
+        // A lobe that the integral objective barely constrains: the L3 fit instead (fit_node.hpp).
+        anisotropic_options l3 = opt;
+        l3.goal = objective::l3;
+        anisotropic_node alt = detail::anisotropic_fit_from<Brdf>(V, alpha, mom, dims, p, l3);
+        alt.evaluations += r.evaluations;
+        r = alt;
+    }
     return r;
 }
 
@@ -380,7 +451,7 @@ struct anisotropic_table_fit {
         d.reserve(nodes.size() * anisotropic_layout::channels);
         for (const anisotropic_node& n : nodes) {
             for (int c = 0; c < 3; ++c)
-                for (int w = 0; w < 3; ++w) d.push_back(float(n.m_inv[c][w]));
+                for (int w = 0; w < 3; ++w) d.push_back(float(n.matrix[c][w]));
             d.push_back(float(n.magnitude));
             d.push_back(float(n.fresnel));
         }
@@ -394,6 +465,7 @@ namespace detail {
 /// are not needed (only the start of a chain is swapped: swap_start).
 inline anisotropic_node swapped(anisotropic_node n) {
     n.m_inv = ltc::detail::swap_xy(n.m_inv);
+    n.matrix = ltc::detail::swap_xy(n.matrix);
     return n;
 }
 
@@ -548,8 +620,9 @@ inline std::string anisotropic_table_header_text(const std::string& name, const 
       << "// 11 floats each; alpha = max(i / " << n - 1 << ", " << num(opt.alpha_min) << "), theta_v = k / " << n - 1
       << " * 0.9999 pi/2, phi_v = l / " << n - 1 << " * pi/2;\n"
       << "// data[((pair * " << n << " + k) * " << n << " + l) * 11 + channel], pair = i (i + 1) / 2 + j. Channels:\n"
-      << "// m_inv[c][r] at 3 c + r (GLM column-major; canonical: det > 0, upper-left 2x2 block symmetric\n"
-      << "// with trace 2), magnitude = integral of rho cos, fresnel = integral of rho cos (1 - V.H)^5.\n"
+      << "// M[c][r] at 3 c + r (GLM column-major) of the LTC matrix M (not its inverse) in canonical form\n"
+      << "// (M^-1 with det > 0 and a symmetric upper-left 2x2 block of the largest trace, M scaled to |M e_z| = 1),\n"
+      << "// magnitude = integral of rho cos, fresnel = integral of rho cos (1 - V.H)^5.\n"
       << "// Look it up with ltc::anisotropic_table (ltc/tables/anisotropic_table.hpp) or ltc::ggx_anisotropic::fetch.\n"
       << "// Fit (ltc/fitting/fit_anisotropic.hpp): M = R [m11 m12 m13; 0 m22 m23; m31 m32 1], R the rotation\n"
       << "// to the average direction, minimizing the L3 error (MIS over " << opt.error_samples << " x "

@@ -22,14 +22,17 @@
 // the nodes with i >= j are stored (alpha pair p = i (i+1) / 2 + j, n (n+1) / 2 pairs); node
 // (i, j, k, l) with i < j is S node(j, i, k, n-1-l) S.
 //
-// Channels (11 floats per node): m_inv[c][r] at 3 c + r (GLM column-major), the inverse LTC
-// matrix in the canonical form of ltc/fitting/anisotropic_parameters.hpp (det > 0, the upper-left
-// 2x2 block symmetric with trace 2); 9: magnitude (directional albedo); 10: fresnel. Data:
-// data[((p * n + k) * n + l) * 11 + channel].
+// Channels (11 floats per node): M[c][r] at 3 c + r (GLM column-major), the LTC matrix itself
+// (not its inverse) in the canonical form of ltc/fitting/anisotropic_parameters.hpp (M^-1 with
+// det > 0 and a symmetric upper-left 2x2 block of the largest trace; M scaled to |M e_z| = 1);
+// 9: magnitude (directional albedo); 10: fresnel. Data: data[((p * n + k) * n + l) * 11 + channel].
 //
 // Lookup: alpha clamped to [0, 1], cos theta_v to [0, 1] (NaN counts as 0), phi_v any real
 // (reduced mod 2 pi; NaN and Inf count as 0), then quadrilinear interpolation of all 11 channels
-// in the stored quadrant phi in [0, pi/2], and the mirrors above: finite for any input.
+// in the stored quadrant phi in [0, pi/2] (M, as Kt et al.'s shader interpolates it), the mirrors
+// above, and m_inv = M^-1 (adjugate / det). Finite for any input: an interpolated M whose
+// determinant is not positive and finite (never between the shipped table's nodes) gives
+// m_inv = I, the clamped cosine.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -131,8 +134,9 @@ class anisotropic_table {
     }
 
     /// The LTC coefficients for the view (cos theta_v, phi_v) and the roughness (alpha_x,
-    /// alpha_y): clamped as the file comment says, interpolated quadrilinearly in the stored
-    /// quadrant, then mirrored into phi_v's quadrant. Nodes are returned exactly.
+    /// alpha_y): clamped as the file comment says, M interpolated quadrilinearly in the stored
+    /// quadrant, mirrored into phi_v's quadrant and inverted. At a node, m_inv is the inverse of
+    /// the node's M (node()) and magnitude and fresnel are the stored floats.
     template <typename T>
     ltc_coefficients<T> fetch(T cos_theta_v, T phi_v, T alpha_x, T alpha_y) const {
         const T n1 = T(size_ > 1 ? size_ - 1 : 1);
@@ -176,12 +180,34 @@ class anisotropic_table {
         return r;
     }
 
+    /// The stored (canonical) M of node (i, j, k, l), by the swap symmetry for i < j.
+    template <typename T>
+    glm::mat<3, 3, T> matrix(int i, int j, int k, int l) const {
+        T v[channels];
+        node(i, j, k, l, v);
+        glm::mat<3, 3, T> M;
+        for (int c = 0; c < 3; ++c)
+            for (int w = 0; w < 3; ++w) M[c][w] = v[3 * c + w];
+        return M;
+    }
+
   private:
+    /// m_inv = M^-1 from the channels (adjugate: rows are cross products of M's columns).
     template <typename T>
     static ltc_coefficients<T> coefficients(const T* v) {
-        ltc_coefficients<T> r;
-        for (int c = 0; c < 3; ++c)
-            for (int w = 0; w < 3; ++w) r.m_inv[c][w] = v[3 * c + w];
+        using vec3 = glm::vec<3, T>;
+        const vec3 c0(v[0], v[1], v[2]), c1(v[3], v[4], v[5]), c2(v[6], v[7], v[8]);
+        const vec3 r0 = glm::cross(c1, c2), r1 = glm::cross(c2, c0), r2 = glm::cross(c0, c1);
+        const T det = glm::dot(c0, r0);
+        ltc_coefficients<T> r;  // m_inv = I unless det is positive and finite
+        if (det > T(0) && det <= std::numeric_limits<T>::max()) {
+            const T inv = T(1) / det;
+            const glm::mat<3, 3, T> m = glm::transpose(glm::mat<3, 3, T>(r0 * inv, r1 * inv, r2 * inv));
+            bool finite = true;
+            for (int c = 0; c < 3; ++c)
+                for (int w = 0; w < 3; ++w) finite = finite && std::isfinite(m[c][w]);
+            if (finite) r.m_inv = m;
+        }
         r.magnitude = v[anisotropic_layout::magnitude];
         r.fresnel = v[anisotropic_layout::fresnel];
         return r;
