@@ -4,7 +4,7 @@
 // Anisotropic GGX"), and on the diagonal alpha_x == alpha_y against the isotropic table
 // (ltc::ggx::fetch rotated by phi_v).
 //
-//   anisotropic_error_report [--peers DIR] [--samples N] [--threads K] [--list]
+//   anisotropic_error_report [--peers DIR] [--samples N] [--threads K] [--at-nodes] [--list]
 //
 // Direct build (as examples/CMakeLists.txt does):
 //   g++ -std=gnu++17 -O2 -DNDEBUG -Iinclude -Iexamples tools/anisotropic_error_report/main.cpp
@@ -33,7 +33,6 @@
 // Errors: |estimate - truth| / truth over the significant configurations, those whose truth is at
 // least 5% of the directional albedo (the BRDF's, by 128 x 128 quadrature): mean and p95, overall,
 // by theta_v and by the anisotropy max(a) / min(a).
-#include "common/cli.hpp"
 #include "common/error_summary.hpp"
 #include "common/parallel_for.hpp"
 
@@ -190,8 +189,19 @@ int main(int argc, char** argv) {
             for (int k = 0; k < 5; ++k) phis[k] = pn[k] / 7 * 90;
         }
         else if (a == "--help" || a == "-h") {
-            std::cout << "usage: anisotropic_error_report [--peers DIR] [--samples N] [--threads K] [--list]\n"
-                         "(the grid and the method: the comment at the top of tools/anisotropic_error_report/main.cpp)\n";
+            std::cout << "usage: anisotropic_error_report [--peers DIR] [--samples N] [--threads K] [--at-nodes] [--list]\n"
+                         "\n"
+                         "LTC shading of anisotropic GGX over squares against Monte Carlo: ltc::ggx_anisotropic::fetch,\n"
+                         "the published 8^4 table of Kt et al. 2022 and, on the diagonal, ltc::ggx::fetch rotated by phi_v\n"
+                         "(the grid and the method: the comment at the top of tools/anisotropic_error_report/main.cpp).\n"
+                         "\n"
+                         "  --peers DIR   where kt2022_alphax_alphay_theta_phi.npy is (default ../shared/peers/anisotropic,\n"
+                         "                from the repository root); without it the published column is skipped\n"
+                         "  --samples N   Monte Carlo iterations per configuration (default 32768)\n"
+                         "  --threads K   worker threads (default: all cores); also -j K\n"
+                         "  --at-nodes    the grid moved onto the 8^4 grid's nodes (the fit alone, no interpolation)\n"
+                         "  --list        every configuration's truth and estimates\n"
+                         "  --help        this text; also -h\n";
             return 0;
         } else {
             std::cerr << "anisotropic_error_report: unknown option " << a << "\n";
