@@ -14,7 +14,7 @@ build=${1:-$root/build-results}
 out=$root/docs/results
 jobs=$(nproc)
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DLTC_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" -j"$jobs" --target ggx_error_report shape_error_report textured_error_report bench_batch bench_shading
+cmake --build "$build" -j"$jobs" --target ggx_error_report shape_error_report textured_error_report anisotropic_error_report bench_batch bench_shading
 mkdir -p "$out"
 commit=$(git -C "$root" rev-parse --short HEAD)
 dirty=$(git -C "$root" status --porcelain --untracked-files=no -- include examples benchmarks | head -c1)
@@ -33,6 +33,8 @@ report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo gr
   "$build/tools/shape_error_report"
 report textured_error.md "Textured lights against Monte Carlo ground truth" \
   "$build/tools/textured_error_report"
+report anisotropic_error.md "Anisotropic GGX against Monte Carlo ground truth (this table, the published 8^4 table, the isotropic table)" \
+  "$build/tools/anisotropic_error_report" --peers "$root/../shared/peers/anisotropic"
 echo "results: benchmarks" >&2
 mkdir -p "$build/speed"
 python3 "$root/benchmarks/speed_tables.py" --build "$build" --out "$build/speed" \

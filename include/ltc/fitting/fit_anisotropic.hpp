@@ -83,6 +83,8 @@ struct anisotropic_options {
     unsigned threads = 0;           ///< worker threads (0: all cores)
     double progress_interval = 0.1; ///< seconds between progress callbacks
     objective goal = objective::combined;  ///< l3, integrals (anisotropic_polygon_family) or their sum
+    double integral_floor = 0.01;    ///< the integral loss's floor, a fraction of the magnitude
+    double l3_weight = 1.0;          ///< combined: integral loss + l3_weight * (relative L3)^2
 };
 
 /// alpha of node i of n: max(i / (n - 1), alpha_min).
@@ -348,7 +350,7 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
         const std::vector<family_polygon> family = anisotropic_polygon_family(p.axis, alpha);
         std::vector<double> g;
         family_integrals<Brdf>(V, alpha, family, default_brdf_samples, default_polygon_samples, g, nullptr);
-        targets = significant_targets(family, g, mom.magnitude, integral_family::rings().floor);
+        targets = significant_targets(family, g, mom.magnitude, opt.integral_floor);
     }
     double step = opt.initial_step;
     for (int round = 0; round < std::max(1, opt.rounds); ++round) {
@@ -365,7 +367,7 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
             double e = integral_loss(targets, m_inv, r.magnitude);
             if (opt.goal == objective::combined) {
                 const double l3 = std::cbrt(samples.l3(m_inv, abs_det, r.magnitude) / f3);
-                e += l3 * l3;
+                e += opt.l3_weight * l3 * l3;
             }
             return e;
         };
