@@ -2,11 +2,14 @@
 // header (the shipped include/ltc/tables/ggx.hpp is this program's output):
 //
 //   ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp
+//   ltc_fit --brdf ggx_anisotropic --out include/ltc/tables/ggx_anisotropic.hpp
 //
 // (and the others: the command in each table's own header comment, or ltc_fit --help)
 //
 // The fit is ltc::fit::fit_table (include/ltc/fitting/fit_table.hpp; ltc/fitting/fit.hpp gives an
 // overview of the method) and the text is ltc::fit::table_header_text (ltc/fitting/table_writer.hpp);
+// for ggx_anisotropic, ltc::fit::fit_anisotropic_table and anisotropic_table_header_text
+// (ltc/fitting/fit_anisotropic.hpp);
 // the output depends only on the options that change the fit (--brdf, --size, --objective), never
 // on --threads: the same binary writes the same bytes with any thread count.
 #include "common/cli.hpp"
@@ -15,7 +18,9 @@
 #include <ltc/brdf/beckmann.hpp>
 #include <ltc/brdf/charlie.hpp>
 #include <ltc/brdf/ggx.hpp>
+#include <ltc/brdf/ggx_anisotropic.hpp>
 #include <ltc/fitting/fit.hpp>
+#include <ltc/fitting/fit_anisotropic.hpp>
 #include <ltc/fitting/table_writer.hpp>
 
 #include <algorithm>
@@ -29,7 +34,7 @@
 namespace {
 
 const char* const usage_text =
-    "usage: ltc_fit --brdf ggx|beckmann|charlie --out FILE [--size N] [--objective O] [--lobes 1|2|cosine] [--threads K] [--quiet]\n"
+    "usage: ltc_fit --brdf ggx|beckmann|charlie|ggx_anisotropic --out FILE [--size N] [--objective O] [--lobes 1|2|cosine] [--threads K] [--quiet]\n"
     "\n"
     "Fits a table of Linearly Transformed Cosines (Heitz et al. 2016) to the BRDF, with the\n"
     "method of ltc/fitting/fit.hpp, and writes it to FILE as a C++ header defining\n"
@@ -38,7 +43,10 @@ const char* const usage_text =
     "magnitude and the Fresnel term; layout in ltc/tables/ltc_table.hpp).\n"
     "\n"
     "  --brdf NAME    ggx (GGX, Smith height-correlated), beckmann, or charlie (the sheen of\n"
-    "                 KHR_materials_sheen, ltc/brdf/charlie.hpp); alpha = roughness^2 (required)\n"
+    "                 KHR_materials_sheen, ltc/brdf/charlie.hpp); alpha = roughness^2 (required);\n"
+    "                 or ggx_anisotropic: an N^4 table over (alpha_x, alpha_y, theta_v, phi_v) of\n"
+    "                 full-matrix LTCs (ltc/fitting/fit_anisotropic.hpp; default size 8; 11 floats per\n"
+    "                 node, layout in ltc/tables/anisotropic_table.hpp; --objective l3 and --lobes 1 only)\n"
     "  --out FILE     the header to write ('-' for standard output; required); also -o FILE\n"
     "  --size N       nodes per axis (default 64 with one lobe, 32 with two; at least 2)\n"
     "  --objective O  l3 (default: the paper's, the shipped tables), integrals, combined,\n"
@@ -63,7 +71,8 @@ const char* const usage_text =
     "  ltc_fit --brdf ggx --out include/ltc/tables/ggx.hpp\n"
     "  ltc_fit --brdf ggx --lobes 2 --out include/ltc/tables/ggx_two_lobe.hpp\n"
     "  ltc_fit --brdf ggx --lobes cosine --out include/ltc/tables/ggx_cosine_lobe.hpp\n"
-    "  ltc_fit --brdf charlie --objective combined --out include/ltc/tables/charlie.hpp\n";
+    "  ltc_fit --brdf charlie --objective combined --out include/ltc/tables/charlie.hpp\n"
+    "  ltc_fit --brdf ggx_anisotropic --out include/ltc/tables/ggx_anisotropic.hpp\n";
 
 struct arguments {
     std::string brdf;
@@ -118,10 +127,14 @@ arguments parse(int argc, char** argv) {
     };
     if (const int r = ltc_examples::parse_options(argc, argv, help, flag, option); r != 0) std::exit(r == 1 ? 0 : 2);
     if (a.brdf.empty()) fail("--brdf is required");
-    if (a.brdf != "ggx" && a.brdf != "beckmann" && a.brdf != "charlie")
-        fail("unknown BRDF '" + a.brdf + "' (ggx, beckmann or charlie)");
+    if (a.brdf != "ggx" && a.brdf != "beckmann" && a.brdf != "charlie" && a.brdf != "ggx_anisotropic")
+        fail("unknown BRDF '" + a.brdf + "' (ggx, beckmann, charlie or ggx_anisotropic)");
     if (a.out.empty()) fail("--out is required");
     if (a.lobes == 2 && a.goal != ltc::fit::objective::l3) fail("--objective does not apply to --lobes 2 or cosine");
+    if (a.brdf == "ggx_anisotropic" && (a.lobes != 1 || a.goal != ltc::fit::objective::l3))
+        fail("ggx_anisotropic fits one lobe with --objective l3");
+    if (a.brdf == "ggx_anisotropic" && a.size > 64) fail("--size is at most 64 with ggx_anisotropic");
+    if (a.size == 0 && a.brdf == "ggx_anisotropic") a.size = ltc::fit::anisotropic_options{}.size;
     if (a.size == 0) a.size = a.lobes == 2 ? ltc::fit::two_lobe_default_size : ltc::fit::options{}.size;
     return a;
 }
@@ -175,11 +188,35 @@ int run(const arguments& args, const char* description) {
     return 0;
 }
 
+/// The anisotropic table (fit_anisotropic_table).
+int run_anisotropic(const arguments& args) {
+    ltc::fit::anisotropic_options opt;
+    opt.size = args.size;
+    opt.threads = args.threads;
+    ltc_examples::progress bar("fit", "nodes", ltc_examples::progress_on_stderr(args.quiet));
+    const ltc::fit::anisotropic_table_fit tab = ltc::fit::fit_anisotropic_table<ltc::brdf::ggx_anisotropic>(
+        opt, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+    const double seconds = bar.seconds();
+    const ltc::fit::anisotropic_error_summary err = ltc::fit::summarize_error(tab);
+    const char* description =
+        "anisotropic GGX microfacet NDF (alpha_x along the tangent +x, alpha_y along +y), Smith height-correlated "
+        "masking-shadowing,\n// no Fresnel (factored out, see the fresnel channel)";
+    if (!write_text(args.out, ltc::fit::anisotropic_table_header_text(args.brdf, description, tab, opt))) return 1;
+    const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::fprintf(args.out == "-" ? stderr : stdout,
+                 "ltc_fit: %s, %d^4 nodes in %.2f s on %u thread%s; fit error (relative) L1 mean %.4f max %.4f, "
+                 "L3 mean %.4f max %.4f%s%s\n",
+                 args.brdf.c_str(), tab.size, seconds, threads, threads == 1 ? "" : "s", err.mean_l1, err.max_l1,
+                 err.mean_l3, err.max_l3, args.out == "-" ? "" : "; wrote ", args.out == "-" ? "" : args.out.c_str());
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const arguments args = parse(argc, argv);
     try {
+        if (args.brdf == "ggx_anisotropic") return run_anisotropic(args);
         if (args.brdf == "ggx") return run<ltc::brdf::ggx>(args, "GGX microfacet NDF, Smith height-correlated masking-shadowing");
         if (args.brdf == "charlie")
             return run<ltc::brdf::charlie>(args, "Charlie sheen of KHR_materials_sheen (Estevez and Kulla 2017), without the sheen colour");

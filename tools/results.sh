@@ -27,9 +27,11 @@ wanted ggx_error.md && targets+=(ggx_error_report)
 wanted shape_error.md && targets+=(shape_error_report)
 wanted textured_error.md && targets+=(textured_error_report)
 wanted sheen_error.md && targets+=(sheen_error_report)
+wanted anisotropic_error.md && targets+=(anisotropic_error_report)
 { wanted speed.md || wanted summary.md; } && targets+=(bench_batch bench_shading)
 if [[ ${#targets[@]} -eq 0 ]]; then
-  echo "results: nothing to write (files: ggx_error.md shape_error.md textured_error.md sheen_error.md speed.md summary.md)" >&2
+  echo "results: nothing to write (files: ggx_error.md shape_error.md textured_error.md sheen_error.md" \
+       "anisotropic_error.md speed.md summary.md)" >&2
   exit 2
 fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DLTC_BUILD_BENCHMARKS=ON >/dev/null
@@ -54,6 +56,8 @@ wanted textured_error.md && report textured_error.md "Textured lights against Mo
   "$build/tools/textured_error_report"
 wanted sheen_error.md && report sheen_error.md "Charlie sheen shading against Monte Carlo ground truth (ltc::sheen::charlie's table and the fit's objectives)" \
   "$build/tools/sheen_error_report"
+wanted anisotropic_error.md && report anisotropic_error.md "Anisotropic GGX against Monte Carlo ground truth (this table, the published 8^4 table, the isotropic table)" \
+  "$build/tools/anisotropic_error_report" --peers "$root/../shared/peers/anisotropic"
 if wanted speed.md || wanted summary.md; then
   echo "results: benchmarks" >&2
   mkdir -p "$build/speed"

@@ -199,9 +199,10 @@ namespace detail {
 /// The quadrature's sums G_k over `family` (make_integral_targets) of f = Brdf::eval, and, with `fresnel`
 /// not null, of f (1 - V.H)^5 (brdf::schlick_weight, the Fresnel part) from the same samples in
 /// the same pass: each sum is the one make_integral_targets gives for Brdf, or for
-/// brdf::fresnel_part<Brdf>, bit for bit.
-template <template <typename> class Brdf>
-void family_integrals(const glm::dvec3& V, double alpha, const std::vector<family_polygon>& family, int n_b, int m,
+/// brdf::fresnel_part<Brdf>, bit for bit. Alpha is the BRDF's parameter (double, or
+/// brdf::anisotropic_alpha<double> for ltc/fitting/fit_anisotropic.hpp).
+template <template <typename> class Brdf, typename Alpha>
+void family_integrals(const glm::dvec3& V, const Alpha& alpha, const std::vector<family_polygon>& family, int n_b, int m,
                       std::vector<double>& g, std::vector<double>* fresnel) {
     using B = Brdf<double>;
     const double N_b = double(n_b) * double(n_b), N_p = 6.0 * double(m) * double(m);
