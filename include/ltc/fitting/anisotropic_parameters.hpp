@@ -3,7 +3,14 @@
 // (canonical_inverse), after Kt, Heitz, Dupuy and Narayanan 2022, "Bringing Linearly Transformed
 // Cosines to Anisotropic GGX" (section 4: a full 3x3 matrix per node, made unique before
 // interpolation).
-//
+#pragma once
+
+#include <ltc/config.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
 // Invariances. The LTC of M (eq. 1 of Heitz et al. 2016) does not change under M -> s M (s > 0)
 // nor under M -> M Q for Q a rotation about z or a mirror through a vertical plane (the clamped
 // cosine is invariant under both). So 7 of M's 9 numbers matter: the fit writes
@@ -26,13 +33,6 @@
 //
 // Degenerate cases: canonical_inverse of a matrix whose block is 0 only fixes det > 0 and scales
 // the third row to unit length; full_inverse reports a singular or non-finite input (ok = false).
-#pragma once
-
-#include <ltc/config.hpp>
-
-#include <glm/glm.hpp>
-
-#include <cmath>
 
 LTC_NAMESPACE_BEGIN
 namespace fit {

@@ -7,34 +7,6 @@
 //   const auto tab = ltc::fit::fit_anisotropic_table<ltc::brdf::ggx_anisotropic>(
 //       ltc::fit::anisotropic_options{});
 //   std::vector<float> data = tab.packed();   // the layout of ltc/tables/anisotropic_table.hpp
-//
-// Per node (V = (sin t cos p, sin t sin p, cos t), alpha = {alpha_x, alpha_y}, frame N = +z,
-// tangent +x): magnitude and fresnel as ltc/fitting/moments.hpp (midpoint rule through the BRDF's
-// sampler), the average direction of f = rho cos without its y zeroed; then options::rounds rounds
-// of Nelder-Mead (ltc/fitting/nelder_mead.hpp) on the paper's L3 distance
-//
-//   E(M) = integral |f(L) - magnitude D_M(L)|^3 dL ~= sum_i |f - m D|^3 / (n^2 p_brdf + n^2 p_ltc)
-//
-// over a frozen MIS sample set re-centred each round (ltc/fitting/error_metric.hpp's estimator
-// for a full m_inv), in the parameters of ltc/fitting/anisotropic_parameters.hpp:
-//   general node          7: (log m11, log m22, m12 / m22, m13 / m11, m23 / m22, m31, m32)
-//   phi_v = 0 (mirror y)  4: (log m11, log m22, m13 / m11, m31), the isotropic fitter's matrix
-//   phi_v = pi/2          the phi_v = 0 fit of the swapped BRDF (alpha_y, alpha_x), swapped back
-//   theta_v = 0           2: diag(m11, m22, 1), 1 when alpha_x == alpha_y
-// so that the nodes on the mirror planes are exactly symmetric and the lookup's mirrors are
-// continuous. The stored matrix is canonical_matrix(canonical_inverse(M^-1)).
-//
-// Order (continuation, as the isotropic fit_table): per alpha pair with alpha_x >= alpha_y the
-// normal-incidence node first (from diag(alpha_x, alpha_y, 1)), then for each phi node a chain
-// from theta_v = 0 to grazing, each node started from its neighbour. Pairs with alpha_x <
-// alpha_y are the swap symmetry's (ltc/tables/anisotropic_table.hpp), and so are the diagonal's
-// nodes past phi = pi/4. Chains are independent work items: the result does not depend on the
-// thread count. A node whose relative L1 error exceeds 1 is refitted from a fresh start (an
-// isotropic lobe of width max(alpha_x, alpha_y) on the average direction) and the better kept.
-//
-// Degenerate cases: alpha below options::alpha_min is clamped (node 0 of each alpha axis);
-// theta_v stops at theta_max = 0.9999 pi/2 (V.z = 0 leaves rho undefined); with an odd size the
-// diagonal's middle phi node (phi = pi/4) is fitted without the swap constraint.
 #pragma once
 
 #include <ltc/config.hpp>
@@ -64,6 +36,34 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+// Per node (V = (sin t cos p, sin t sin p, cos t), alpha = {alpha_x, alpha_y}, frame N = +z,
+// tangent +x): magnitude and fresnel as ltc/fitting/moments.hpp (midpoint rule through the BRDF's
+// sampler), the average direction of f = rho cos without its y zeroed; then options::rounds rounds
+// of Nelder-Mead (ltc/fitting/nelder_mead.hpp) on the paper's L3 distance
+//
+//   E(M) = integral |f(L) - magnitude D_M(L)|^3 dL ~= sum_i |f - m D|^3 / (n^2 p_brdf + n^2 p_ltc)
+//
+// over a frozen MIS sample set re-centred each round (ltc/fitting/error_metric.hpp's estimator
+// for a full m_inv), in the parameters of ltc/fitting/anisotropic_parameters.hpp:
+//   general node          7: (log m11, log m22, m12 / m22, m13 / m11, m23 / m22, m31, m32)
+//   phi_v = 0 (mirror y)  4: (log m11, log m22, m13 / m11, m31), the isotropic fitter's matrix
+//   phi_v = pi/2          the phi_v = 0 fit of the swapped BRDF (alpha_y, alpha_x), swapped back
+//   theta_v = 0           2: diag(m11, m22, 1), 1 when alpha_x == alpha_y
+// so that the nodes on the mirror planes are exactly symmetric and the lookup's mirrors are
+// continuous. The stored matrix is canonical_matrix(canonical_inverse(M^-1)).
+//
+// Order (continuation, as the isotropic fit_table): per alpha pair with alpha_x >= alpha_y the
+// normal-incidence node first (from diag(alpha_x, alpha_y, 1)), then for each phi node a chain
+// from theta_v = 0 to grazing, each node started from its neighbour. Pairs with alpha_x <
+// alpha_y are the swap symmetry's (ltc/tables/anisotropic_table.hpp), and so are the diagonal's
+// nodes past phi = pi/4. Chains are independent work items: the result does not depend on the
+// thread count. A node whose relative L1 error exceeds 1 is refitted from a fresh start (an
+// isotropic lobe of width max(alpha_x, alpha_y) on the average direction) and the better kept.
+//
+// Degenerate cases: alpha below options::alpha_min is clamped (node 0 of each alpha axis);
+// theta_v stops at theta_max = 0.9999 pi/2 (V.z = 0 leaves rho undefined); with an odd size the
+// diagonal's middle phi node (phi = pi/4) is fitted without the swap constraint.
 
 LTC_NAMESPACE_BEGIN
 namespace fit {

@@ -8,18 +8,18 @@
 //   float spec = c.magnitude * d.integrate(polygon, n);            // ~ integral of rho cos over P
 //   // with a specular colour F0 (Schlick's Fresnel, Hill 2016):
 //   //   (F0 * c.magnitude + (1 - F0) * c.fresnel) * d.integrate(polygon, n)
-//
-// Conventions: anisotropic GGX with Smith height-correlated masking-shadowing and no Fresnel
-// (ltc::brdf::ggx_anisotropic), alpha_x along the tangent; the polygon in the local frame N = +z,
-// tangent +x, V = (sin theta_v cos phi_v, sin theta_v sin phi_v, cos theta_v). Degenerate cases:
-// alpha and cos theta_v clamped to [0, 1] (NaN counts as 0), phi_v any real (NaN and Inf count
-// as 0): finite for any input (ltc/tables/anisotropic_table.hpp).
 #pragma once
 
 #include <ltc/config.hpp>
 
 #include <ltc/tables/anisotropic_table.hpp>
 #include <ltc/tables/ggx_anisotropic.hpp>
+
+// Conventions: anisotropic GGX with Smith height-correlated masking-shadowing and no Fresnel
+// (ltc::brdf::ggx_anisotropic), alpha_x along the tangent; the polygon in the local frame N = +z,
+// tangent +x, V = (sin theta_v cos phi_v, sin theta_v sin phi_v, cos theta_v). Degenerate cases:
+// alpha and cos theta_v clamped to [0, 1] (NaN counts as 0), phi_v any real (NaN and Inf count
+// as 0): finite for any input (ltc/tables/anisotropic_table.hpp).
 
 LTC_NAMESPACE_BEGIN
 namespace ggx_anisotropic {

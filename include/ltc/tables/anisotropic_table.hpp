@@ -7,7 +7,19 @@
 //   ltc::ltc_coefficients<float> c = table.fetch(cos_theta_v, phi_v, alpha_x, alpha_y);
 //   float e = c.magnitude * ltc::transformed<ltc::clamped_cosine<float>>::from_inverse(c.m_inv)
 //                               .integrate(polygon, n);
-//
+#pragma once
+
+#include <ltc/config.hpp>
+
+#include <ltc/detail/math.hpp>
+#include <ltc/tables/ltc_table.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
 // Frame: N = +z, tangent (the direction of alpha_x) = +x, V = (sin t cos p, sin t sin p, cos t)
 // with t = theta_v and p = phi_v. The BRDF (anisotropic GGX, ltc::brdf::ggx_anisotropic) has
 // the symmetries used to store a quarter of the 4D domain:
@@ -33,18 +45,6 @@
 // above, and m_inv = M^-1 (adjugate / det). Finite for any input: an interpolated M whose
 // determinant is not positive and finite (never between the shipped table's nodes) gives
 // m_inv = I, the clamped cosine.
-#pragma once
-
-#include <ltc/config.hpp>
-
-#include <ltc/detail/math.hpp>
-#include <ltc/tables/ltc_table.hpp>
-
-#include <glm/glm.hpp>
-
-#include <cmath>
-#include <cstddef>
-#include <limits>
 
 LTC_NAMESPACE_BEGIN
 
