@@ -1,7 +1,7 @@
 // GGX shading of one quad light over 4096 shading points (a renderer's pass over its pixels):
 // the reference shader's shading (reference_shading.hpp: frame, two bilinear fetches, two
 // 16-case-clipped integrals), ltc::shade<Model>(surface, light) point by point for each GGX model
-// (BM_shade), ltc::shade_polygon_light_one_lobe point by point (BM_library_scalar),
+// and ltc::ggx::anisotropic (BM_shade), ltc::shade_polygon_light_one_lobe point by point (BM_library_scalar),
 // and ltc::batch::shade_polygon_light_one_lobe (one point per SIMD lane); and one point shaded by
 // 4096 quad lights (ltc::batch::shade_quad_lights_one_lobe); and ltc::shade_polygon_light_two_lobe
 // point by point and ltc::batch::shade_polygon_light_two_lobe (the opt-in two-lobe table), and
@@ -27,6 +27,7 @@
 #include <ltc/shading/polygon_light.hpp>
 #include <ltc/shading/two_lobe_polygon_light.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
+#include <ltc/shading/ggx_anisotropic_model.hpp>
 #include <ltc/shading/lights/polygon_light.hpp>
 #include <ltc/shading/shade.hpp>
 
@@ -175,10 +176,14 @@ template <typename Model>
 void BM_shade(benchmark::State& state) {
     const scene& s = the_scene();
     const auto light = ltc::polygon_light<float>::two_sided(s.light, 4, s.radiance);
+    const glm::vec3 tangent(1.0f, 0.25f, 0.0f);
     std::vector<float> red(kItems);
     for (auto _ : state) {
         for (std::size_t i = 0; i < kItems; ++i) {
-            const ltc::surface<float> p{s.vec(0, i), s.vec(3, i), s.vec(6, i), s.a[9][i], s.vec(10, i), s.vec(13, i)};
+            // Every model gets the anisotropic fields (a brushing direction, another point's
+            // roughness across it), so that all build the same surface.
+            const ltc::surface<float> p{s.vec(0, i),  s.vec(3, i),  s.vec(6, i), s.a[9][i], s.vec(10, i),
+                                        s.vec(13, i), tangent, s.a[9][(i * 7) % kItems]};
             const auto r = ltc::shade<Model>(p, light);
             red[i] = r.specular.x + r.diffuse.x;
         }
@@ -300,6 +305,7 @@ BENCHMARK_TEMPLATE(BM_library_scalar_cosine_lobe, ltc::edge_policy::minimax_rati
 BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::one_lobe);
 BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::ltc_and_cosine);
 BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::two_lobes);
+BENCHMARK_TEMPLATE(BM_shade, ltc::ggx::anisotropic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::automatic);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::baseline);
 BENCHMARK_TEMPLATE(BM_batch_shading, isa::avx2);

@@ -26,6 +26,7 @@
 #include <ltc/shading/batch_shade.hpp>
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
+#include <ltc/shading/ggx_anisotropic_model.hpp>
 #include <ltc/shading/lights/disk_light.hpp>
 #include <ltc/shading/lights/line_light.hpp>
 #include <ltc/shading/lights/sphere_light.hpp>
@@ -58,9 +59,11 @@ template <typename T>
 struct points_of {
     using vec3 = glm::vec<3, T>;
     std::size_t count;
-    std::vector<T> a[16];  // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb
+    // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb, then (anisotropic models only)
+    // tangent xyz roughness_bitangent, from a stream of their own (the first 16 as before)
+    std::vector<T> a[20];
     points_of(std::size_t n, std::uint64_t seed) : count(n) {
-        ltc_test::rng g(seed);
+        ltc_test::rng g(seed), h(seed ^ 0x7a6e67656e74ULL);
         for (std::size_t i = 0; i < n; ++i) {
             const glm::dvec3 P(g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-0.5, 0.5));
             const glm::dvec3 N = g.direction() * g.uniform(0.5, 2.0);
@@ -70,13 +73,17 @@ struct points_of {
             const double v[16] = {P.x, P.y, P.z, N.x, N.y, N.z, V.x, V.y, V.z, g.uniform(0.02, 1.0),
                                   g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform()};
             for (int k = 0; k < 16; ++k) a[k].push_back(T(float(v[k])));
+            const glm::dvec3 t = h.direction();
+            const double w[4] = {t.x, t.y, t.z, h.uniform(0.02, 1.0)};
+            for (int k = 0; k < 4; ++k) a[16 + k].push_back(T(float(w[k])));
         }
     }
     vec3 vec(int c, std::size_t i) const { return vec3(a[c][i], a[c + 1][i], a[c + 2][i]); }
     ltc::batch::surfaces<T> view() const {
         return {count, {a[0].data(), a[1].data(), a[2].data()}, {a[3].data(), a[4].data(), a[5].data()},
                 {a[6].data(), a[7].data(), a[8].data()}, a[9].data(), {a[10].data(), a[11].data(), a[12].data()},
-                {a[13].data(), a[14].data(), a[15].data()}};
+                {a[13].data(), a[14].data(), a[15].data()}, {a[16].data(), a[17].data(), a[18].data()},
+                a[19].data()};
     }
     ltc::batch::shading_points<T> old() const {
         const T* c[16];
@@ -606,13 +613,15 @@ void check_lights(std::uint64_t seed) {
             for (const auto isa : ltc::batch::instruction_sets)
                 for (int variant = 0; variant < 2; ++variant) {  // 1: the grazing emission normals
                     if (!ltc::batch::available(isa) || (variant == 1 && f != facing::emission_normal)) continue;
-                    const ltc::surface<T> s{P, Nrm, V, roughness, F0, albedo};
+                    const ltc::surface<T> s{P, Nrm, V, roughness, F0, albedo, vec3(T(0.6), T(0.8), T(0.1)),
+                                            T(1.1) - roughness};
                     const auto lights = (variant == 0 ? soa : grazing).view(f);
                     results_of<T> out(count);
                     ltc::batch::shade<Model, Policy>(s, lights, out.view(), isa);
-                    const ltc::shading_frame<T> frame = ltc::make_shading_frame(Nrm, V);
-                    const auto c = Model::template fetch<T>(frame.cos_theta_v, roughness);
-                    const ltc::shading_point<T> point{frame, P, F0, albedo};
+                    // shade's frame and fetch (the tangent frame for anisotropic models).
+                    const ltc::shading_point<T> point = ltc::detail::model_shading_point<Model>(s);
+                    const ltc::shading_frame<T> frame = point.frame;
+                    const auto c = ltc::detail::fetch_lobes(Model{}, point, s);
                     const std::size_t width = ltc::batch::lane_count<T>(isa);
                     std::size_t bad = 0, exact = 0;
                     for (std::size_t j = 0; j < count; ++j) {
@@ -688,6 +697,8 @@ TEST_CASE("batch::shade over many polygon lights matches ltc::shade light by lig
     check_lights<ltc::ggx::ltc_and_cosine, float, 3>(97);
     check_lights<ltc::ggx::two_lobes, float, 5>(101);
     check_lights<ltc::ggx::ltc_and_cosine, double, 4>(103);
+    check_lights<ltc::ggx::anisotropic, float, 4>(107);
+    check_lights<ltc::ggx::anisotropic, double, 3>(109);
 }
 
 TEST_CASE("batch::polygon_lights: a bad emission normal or null arrays throw ltc::invalid_light",
@@ -847,6 +858,7 @@ TEST_CASE("batch::shade with the other lights, clippings and untabled models is 
     check_other_lights<ltc::ggx::ltc_and_cosine, float>();
     check_other_lights<ltc::ggx::one_lobe, float>();
     check_other_lights<ltc::ggx::two_lobes, double>();
+    check_other_lights<ltc::ggx::anisotropic, float>();
 }
 
 TEST_CASE("batch::one_lobe_table: a model of any table, its state passed first", "[batch][shade]") {

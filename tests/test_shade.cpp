@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <ltc/ltc.hpp>
+#include <ltc/shading/ggx_anisotropic_model.hpp>
 
 #include "support/rng.hpp"
 
@@ -136,12 +137,14 @@ struct tube_desc {
 struct scene {
     dvec3 P, N, V;
     double roughness;
+    dvec3 tangent;               // anisotropic models only: not in N's plane, as a mesh's can be
+    double roughness_bitangent;  // anisotropic models only
 };
 
 const scene scenes[] = {
-    {{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0.3, 0.1, 1.0}, 0.3},
-    {{0.2, -0.1, 0.1}, {0.1, 0.2, 1.0}, {1.0, -0.4, 1.0}, 0.55},
-    {{-0.1, 0.2, 0.0}, {-0.05, 0.0, 1.0}, {-1.0, 0.3, 0.3}, 0.8},
+    {{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0.3, 0.1, 1.0}, 0.3, {1.0, 0.0, 0.0}, 0.6},
+    {{0.2, -0.1, 0.1}, {0.1, 0.2, 1.0}, {1.0, -0.4, 1.0}, 0.55, {0.3, 1.0, 0.2}, 0.25},
+    {{-0.1, 0.2, 0.0}, {-0.05, 0.0, 1.0}, {-1.0, 0.3, 0.3}, 0.8, {1.0, 1.0, -0.5}, 0.45},
 };
 
 constexpr double F0 = 0.3, albedo = 0.6;
@@ -149,7 +152,7 @@ constexpr double F0 = 0.3, albedo = 0.6;
 template <typename T>
 ltc::surface<T> surface_of(const scene& s) {
     using v3 = glm::vec<3, T>;
-    return {v3(s.P), v3(s.N), v3(s.V), T(s.roughness), v3(T(F0)), v3(T(albedo))};
+    return {v3(s.P), v3(s.N), v3(s.V), T(s.roughness), v3(T(F0)), v3(T(albedo)), v3(s.tangent), T(s.roughness_bitangent)};
 }
 
 struct reference {
@@ -185,8 +188,11 @@ template <typename Model, typename Light>
 reference monte_carlo(const scene& sc, const Light& light, double radiance, std::uint64_t seed, int n = 100000) {
     ltc_test::rng rng(seed);
     reference r;
-    const auto f = ltc::make_shading_frame(sc.N, sc.V);
-    const auto c = Model::template fetch<double>(f.cos_theta_v, sc.roughness);
+    // The frame and the lobes of shade's own steps (the tangent frame for anisotropic models).
+    const ltc::surface<double> surf = surface_of<double>(sc);
+    const ltc::shading_point<double> at = ltc::detail::model_shading_point<Model>(surf);
+    const auto& f = at.frame;
+    const auto c = ltc::detail::fetch_lobes(Model{}, at, surf);
     const glm::dmat3 identity(1.0);
     double p, s;
     hit_fraction(light, f, sc.P, identity, rng, n, p, s);
@@ -239,7 +245,8 @@ void check_light(const Desc& desc, const MakeLight& make, const std::string& wha
 
 const polygon_desc quad_front{{{-1.0, 0.5, 0.3}, {1.0, 0.5, 0.3}, {1.2, 1.5, 1.6}, {-0.8, 1.5, 1.6}}, true,
                               {0.0, -1.3, 1.0}};
-const polygon_desc straddling{{{-1.0, 1.0, -0.5}, {1.5, 1.0, -0.5}, {1.0, 0.6, 1.5}, {-0.5, 0.6, 1.5}, {-1.2, 0.8, 0.6}},
+// Planar (the ray test intersects the plane of its first three vertices): -5 y - z = -4.5.
+const polygon_desc straddling{{{-1.0, 1.0, -0.5}, {1.5, 1.0, -0.5}, {1.0, 0.6, 1.5}, {-0.5, 0.6, 1.5}, {-1.2, 0.8, 0.5}},
                               false};
 
 template <typename Model, typename T>
@@ -309,11 +316,13 @@ TEST_CASE("shade: every light with every model against Monte Carlo of the model'
         check_every_light<ltc::ggx::one_lobe, float>("one_lobe");
         check_every_light<ltc::ggx::ltc_and_cosine, float>("ltc_and_cosine");
         check_every_light<ltc::ggx::two_lobes, float>("two_lobes");
+        check_every_light<ltc::ggx::anisotropic, float>("anisotropic");
     }
     SECTION("double") {
         check_every_light<ltc::ggx::one_lobe, double>("one_lobe");
         check_every_light<ltc::ggx::ltc_and_cosine, double>("ltc_and_cosine");
         check_every_light<ltc::ggx::two_lobes, double>("two_lobes");
+        check_every_light<ltc::ggx::anisotropic, double>("anisotropic");
     }
 }
 
@@ -662,6 +671,7 @@ TEMPLATE_TEST_CASE("shade: bad input, the same answer for every light and model"
             f(light, ltc::ggx::one_lobe{});
             f(light, ltc::ggx::ltc_and_cosine{});
             f(light, ltc::ggx::two_lobes{});
+            f(light, ltc::ggx::anisotropic{});
         };
         models(polygon), models(disk), models(sphere), models(line), models(tube), models(textured);
     };

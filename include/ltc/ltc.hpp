@@ -20,6 +20,9 @@
 //   ltc/brdf/       the BRDF models (GGX, anisotropic GGX, Beckmann, Schlick's Fresnel, the
 //                   Charlie sheen);
 //   ltc/tables/     the table format (ltc_table) and the generated GGX and Charlie sheen tables;
+//                   the sheen and anisotropic GGX models are not in this umbrella (their tables
+//                   would parse in every file): ltc/shading/sheen_models.hpp,
+//                   ltc/shading/ggx_anisotropic_model.hpp;
 //   ltc/shading/    what a renderer shades with: polygonal (also shadowed), textured, disk,
 //                   sphere, line and tube lights, the tables' fetches, structure-of-arrays batches;
 //   ltc/reference/  Monte Carlo ground truth (umbrella: ltc/reference.hpp);
@@ -56,8 +59,6 @@
 #include <ltc/shading/surface.hpp>
 #include <ltc/shading/lobes.hpp>
 #include <ltc/shading/ggx_models.hpp>
-#include <ltc/shading/charlie_fetch.hpp>
-#include <ltc/shading/sheen_models.hpp>
 #include <ltc/shading/shade.hpp>
 #include <ltc/shading/lights/light_error.hpp>
 #include <ltc/shading/lights/polygon_light.hpp>

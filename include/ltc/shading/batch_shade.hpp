@@ -99,33 +99,17 @@ inline void write(const shading_results<T>& out, std::size_t i, const shading_re
     for (int c = 0; c < 3; ++c) out.specular[c][i] = r.specular[c], out.diffuse[c][i] = r.diffuse[c];
 }
 
-template <typename Model, typename T, typename = void>
-struct has_static_fetch : std::false_type {};
-template <typename Model, typename T>
-struct has_static_fetch<Model, T, std::void_t<decltype(Model::template fetch<T>(T(0), T(0)))>> : std::true_type {};
-
 template <typename Model, typename = void>
 struct has_tables : std::false_type {};
 template <typename Model>
 struct has_tables<Model, std::void_t<decltype(model_tables<Model>::of(std::declval<const Model&>()))>>
     : std::true_type {};
 
-/// ltc::shade for one item: itself for a model of static fetch, else its steps with the model
-/// object's fetch.
+/// ltc::shade for one item, with the model object's fetch.
 template <typename Policy, typename Model, typename T, typename Light>
 inline shading_result<T> shade_item(const Model& model, const surface<T>& s, const Light& light,
                                     const shade_options& o) {
-    if constexpr (has_static_fetch<Model, T>::value) {
-        (void)model;
-        return ltc::shade<Model, Policy>(s, light, o);
-    } else {
-        if (!ltc::detail::finite(s.position) || !ltc::detail::finite(s.normal) || !ltc::detail::finite(s.view) ||
-            s.view == glm::vec<3, T>(T(0)))
-            return {};
-        const shading_point<T> p = make_shading_point(s);
-        if (!p.frame.valid) return {};
-        return shade_lobes<Policy>(p, model.template fetch<T>(p.frame.cos_theta_v, s.roughness), light, o);
-    }
+    return ltc::detail::shade_model<Policy>(model, s, light, o);
 }
 
 /// One polygon light over the full vectors of points, through the SIMD kernel of `which`:
@@ -257,13 +241,13 @@ void shade_lights(const Model& model, const surface<T>& s, const polygon_lights<
     // ltc::shade's bad input: nothing to shade for any light.
     const bool unshaded = !ltc::detail::finite(s.position) || !ltc::detail::finite(s.normal) ||
                           !ltc::detail::finite(s.view) || s.view == vec3(T(0));
-    const shading_point<T> p = make_shading_point(s);
+    const shading_point<T> p = ltc::detail::model_shading_point<Model>(s);
     if (unshaded || !p.frame.valid) simd = false;
     if (!simd) {
         for (std::size_t j = 0; j < count; ++j) scalar(j);
         return;
     }
-    const Lobes c = model.template fetch<T>(p.frame.cos_theta_v, s.roughness);
+    const Lobes c = ltc::detail::fetch_lobes(model, p, s);
     const auto ltcs = set::ltcs(c);
     vec3 brdf[set::ltc_count];
     for (int l = 0; l < set::ltc_count; ++l) brdf[l] = brdf_scale(s.f0, ltcs[static_cast<std::size_t>(l)]);

@@ -168,9 +168,12 @@ struct surfaces {
     scalar_field<T> roughness = uniform(surface<T>{}.roughness);
     vec3_field<T> f0 = uniform(surface<T>{}.f0);
     vec3_field<T> albedo = uniform(surface<T>{}.albedo);
+    vec3_field<T> tangent = uniform(surface<T>{}.tangent);                     ///< anisotropic models only
+    scalar_field<T> roughness_bitangent = uniform(surface<T>{}.roughness_bitangent);  ///< anisotropic models only
 
     surface<T> at(std::size_t i) const {
-        return {position.at(i), normal.at(i), view.at(i), roughness.at(i), f0.at(i), albedo.at(i)};
+        return {position.at(i), normal.at(i), view.at(i), roughness.at(i), f0.at(i), albedo.at(i), tangent.at(i),
+                roughness_bitangent.at(i)};
     }
 };
 

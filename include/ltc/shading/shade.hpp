@@ -20,6 +20,11 @@
 #include <ltc/shading/shading_frame.hpp>
 #include <ltc/shading/surface.hpp>
 
+#include <glm/glm.hpp>
+
+#include <type_traits>
+#include <utility>
+
 LTC_NAMESPACE_BEGIN
 
 /// The shading point of s in the frame of the tables (invalid frame: N or V zero or not finite).
@@ -28,24 +33,70 @@ LTC_HOST_DEVICE LTC_INLINE shading_point<T> make_shading_point(const surface<T>&
     return {make_shading_frame(s.normal, s.view), s.position, s.f0, s.albedo};
 }
 
-/// Radiance reflected towards s.view from `light`, with the lobes of Model. shade<Model>(s,
-/// light, options) builds the frame of the tables at s.position (N = +z, V in the xz-plane:
-/// make_shading_frame), reads the model's lobes at (cos theta_v, roughness) and shades them
-/// against the light (ltc/shading/lobes.hpp: the equations). Lights: polygon_light, disk_light,
-/// sphere_light, line_light, tube_light and textured_quad_light (ltc/shading/lights/). Models:
-/// ltc::ggx::one_lobe, ltc_and_cosine (the default), two_lobes (ltc/shading/ggx_models.hpp), the
-/// sheen ltc::sheen::charlie (ltc/shading/sheen_models.hpp), or a user's own (the model interface
-/// in ggx_models.hpp). Bad input: the file's first comment.
-/// Policy: the edge terms of the polygon integrals (ltc/core/edge_policy.hpp).
-template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
-LTC_INLINE shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
+/// The shading point of s in the frame of the anisotropic tables (make_tangent_frame: T1 along
+/// s.tangent).
+template <typename T>
+LTC_HOST_DEVICE LTC_INLINE shading_point<T> make_tangent_shading_point(const surface<T>& s) {
+    return {make_tangent_frame(s.normal, s.view, s.tangent), s.position, s.f0, s.albedo};
+}
+
+namespace detail {
+/// Whether Model is anisotropic: its fetch takes (cos theta_v, phi_v, roughness, roughness_bitangent).
+template <typename Model, typename T, typename = void>
+struct takes_tangent : std::false_type {};
+template <typename Model, typename T>
+struct takes_tangent<Model, T,
+                     std::void_t<decltype(std::declval<const Model&>().template fetch<T>(T(0), T(0), T(0), T(0)))>>
+    : std::true_type {};
+
+/// The shading point of s in the frame of Model's tables.
+template <typename Model, typename T>
+LTC_HOST_DEVICE LTC_INLINE shading_point<T> model_shading_point(const surface<T>& s) {
+    if constexpr (takes_tangent<Model, T>::value)
+        return make_tangent_shading_point(s);
+    else
+        return make_shading_point(s);
+}
+
+/// Model's lobes at s, p its model_shading_point.
+template <typename Model, typename T>
+LTC_INLINE auto fetch_lobes(const Model& model, const shading_point<T>& p, const surface<T>& s) {
+    if constexpr (takes_tangent<Model, T>::value)
+        return model.template fetch<T>(p.frame.cos_theta_v, view_azimuth(p.frame, s.view), s.roughness,
+                                       s.roughness_bitangent);
+    else
+        return model.template fetch<T>(p.frame.cos_theta_v, s.roughness);
+}
+
+/// shade's steps with a model object (static fetch or not: batch::shade's models with state).
+template <typename Policy, typename Model, typename T, typename Light>
+LTC_INLINE shading_result<T> shade_model(const Model& model, const surface<T>& s, const Light& light,
+                                         const shade_options& options) {
     // x - x is 0 for finite x, NaN for an infinity or NaN: one test for the nine coordinates.
     const glm::vec<3, T> z = (s.position - s.position) + (s.normal - s.normal) + (s.view - s.view);
     if (!(z.x + z.y + z.z == T(0)) || s.view == glm::vec<3, T>(T(0)))
         return {};
-    const shading_point<T> p = make_shading_point(s);
+    const shading_point<T> p = model_shading_point<Model>(s);
     if (!p.frame.valid) return {};
-    return shade_lobes<Policy>(p, Model::template fetch<T>(p.frame.cos_theta_v, s.roughness), light, options);
+    return shade_lobes<Policy>(p, fetch_lobes(model, p, s), light, options);
+}
+}  // namespace detail
+
+/// Radiance reflected towards s.view from `light`, with the lobes of Model. shade<Model>(s,
+/// light, options) builds the frame of the tables at s.position (N = +z, V in the xz-plane:
+/// make_shading_frame; anisotropic models: the tangent along +x, make_tangent_frame), reads the
+/// model's lobes at (cos theta_v, roughness) (anisotropic: at (cos theta_v, phi_v, roughness,
+/// roughness_bitangent)) and shades them against the light (ltc/shading/lobes.hpp: the
+/// equations). Lights: polygon_light, disk_light, sphere_light, line_light, tube_light and
+/// textured_quad_light (ltc/shading/lights/). Models: ltc::ggx::one_lobe, ltc_and_cosine (the
+/// default), two_lobes (ltc/shading/ggx_models.hpp), ltc::ggx::anisotropic
+/// (ltc/shading/ggx_anisotropic_model.hpp), the sheen ltc::sheen::charlie
+/// (ltc/shading/sheen_models.hpp), or a user's own (the model interface in ggx_models.hpp). Bad
+/// input: the file's first comment. Policy: the edge terms of the polygon integrals
+/// (ltc/core/edge_policy.hpp).
+template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
+LTC_INLINE shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
+    return detail::shade_model<Policy>(Model{}, s, light, options);
 }
 
 LTC_NAMESPACE_END

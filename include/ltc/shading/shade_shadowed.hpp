@@ -437,6 +437,8 @@ template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::a
 shadowed_polygon_light_result<T> shade_shadowed(const surface<T>& s, const polygon_light<T>& light, Visible&& visible,
                                                 const shadow_sampling<T>& options = {}) {
     using vec3 = glm::vec<3, T>;
+    static_assert(!detail::takes_tangent<Model, T>::value,
+                  "shade_shadowed: isotropic models only (its sampled part evaluates isotropic GGX)");
     constexpr std::size_t max_vertices = 8;
     shadowed_polygon_light_result<T> r;
     const std::size_t n = light.size();

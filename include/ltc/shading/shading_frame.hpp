@@ -4,6 +4,8 @@
 //
 //   ltc::shading_frame<float> f = ltc::make_shading_frame(N, V);
 //   glm::vec3 local = f.to_local(p - P);   // p - P in (T1, T2, N); f.cos_theta_v for the table
+//   f = ltc::make_tangent_frame(N, V, tangent);  // anisotropic tables: T1 along the tangent,
+//   float phi_v = ltc::view_azimuth(f, V);       // and V's azimuth from it
 //
 // Conventions: T1 = normalize(V - N (V.N)), T2 = N x T1, a right-handed rotation (orientations are
 // preserved); cos theta_v = clamp(N.V, 0, 1). Degenerate cases: V parallel to N takes any T1
@@ -74,6 +76,41 @@ LTC_HOST_DEVICE LTC_INLINE shading_frame<T> make_shading_frame(const glm::vec<3,
     f.t2 = glm::cross(n, t1);
     f.cos_theta_v = glm::clamp(nv, T(0), T(1));
     return f;
+}
+
+/// The frame of the anisotropic tables at a shading point (ltc/tables/anisotropic_table.hpp):
+/// N = +z and T1 = +x along `tangent` projected onto N's plane (T1 = normalize(N x (tangent x
+/// N)), cancellation-free as make_shading_frame's), T2 = N x T1; V anywhere, at azimuth
+/// view_azimuth(frame, V) from T1; cos theta_v = clamp(N.V, 0, 1). Degenerate tangent (zero, not
+/// finite, or parallel to N): T1 = orthonormal_tangent(N), a fixed direction of N's plane, so the
+/// result stays finite. A zero or non-finite N: valid = false, as make_shading_frame.
+template <typename T>
+LTC_HOST_DEVICE LTC_INLINE shading_frame<T> make_tangent_frame(const glm::vec<3, T>& N, const glm::vec<3, T>& V,
+                                                               const glm::vec<3, T>& tangent) {
+    shading_frame<T> f;
+    const glm::vec<3, T> n = detail::safe_normalize(N);
+    if (n == glm::vec<3, T>(T(0))) {
+        f.valid = false;
+        return f;
+    }
+    glm::vec<3, T> t1(T(0));
+    const glm::vec<3, T> z = tangent - tangent;  // (0, 0, 0) for a finite tangent, else NaN
+    if (z.x + z.y + z.z == T(0)) {
+        const glm::vec<3, T> t = detail::safe_normalize(tangent);
+        t1 = detail::safe_normalize(glm::cross(n, detail::stable_cross(t, n, glm::dot(t, n))));
+    }
+    if (t1 == glm::vec<3, T>(T(0))) t1 = orthonormal_tangent(n);
+    f.n = n;
+    f.t1 = t1;
+    f.t2 = glm::cross(n, t1);
+    f.cos_theta_v = glm::clamp(glm::dot(n, detail::safe_normalize(V)), T(0), T(1));
+    return f;
+}
+
+/// phi_v, the azimuth of V from the frame's T1 towards T2, in (-pi, pi]; 0 for V along N.
+template <typename T>
+LTC_HOST_DEVICE inline T view_azimuth(const shading_frame<T>& f, const glm::vec<3, T>& V) {
+    return std::atan2(glm::dot(V, f.t2), glm::dot(V, f.t1));
 }
 
 LTC_NAMESPACE_END

@@ -39,6 +39,14 @@ struct surface {
     T roughness{T(0.5)};
     glm::vec<3, T> f0{T(0.04)};     ///< specular colour at normal incidence (any 3 channels)
     glm::vec<3, T> albedo{T(0)};    ///< diffuse albedo (Lambert)
+    /// Anisotropic models only (ltc::ggx::anisotropic): the direction of `roughness`, any length,
+    /// projected onto N's plane; zero, not finite or parallel to N: a fixed direction of that
+    /// plane (make_tangent_frame). Isotropic models ignore it.
+    glm::vec<3, T> tangent{T(0)};
+    /// Anisotropic models only: the roughness along N x tangent (alpha_y = roughness_bitangent^2;
+    /// `roughness` is along the tangent), clamped to [0, 1], NaN read as 0. Isotropic models
+    /// ignore it.
+    T roughness_bitangent{T(0.5)};
 };
 
 /// Specular and diffuse radiance reflected towards V (RGB, or any 3 channels).
