@@ -8,14 +8,15 @@
 // estimate and the blockers' sums are finite and in range, and shade_shadowed's analytic part is
 // ltc::shade<Model>'s bit for bit; and the batch API of the integrals (fuzz_batch.hpp:
 // batches of 1..19 quads or n-gons) agrees with the scalar path.
-// Per input one of three parts (the point's shading and shadows, batch shading, the batch
-// integrals), and within it one horizon-clipping strategy, or one instruction set, table (one
-// lobe, two, or the LTC and the cosine) and the point's or the quad light's batch, or
-// fuzz_batch.hpp's one shape, policy, instruction set and sidedness (fuzzed bytes): over a run
-// they cover every combination, at a fraction of the cost per input of running them all.
-// Input: fuzz_common.hpp's read_scene and read_shading_point, the part's byte, then check_batch's
-// input, or a byte of choices (and the shadow options, then the emission normal's side). Build
-// and run: tests/fuzz/run.sh (README.md there).
+// Per input one of four parts (the point's shading and shadows, batch shading, the batch
+// integrals, anisotropic GGX: check_anisotropic), and within it one horizon-clipping strategy, or
+// one instruction set, table (one lobe, two, or the LTC and the cosine) and the point's or the
+// quad light's batch, or fuzz_batch.hpp's one shape, policy, instruction set and sidedness
+// (fuzzed bytes): over a run they cover every combination, at a fraction of the cost per input of
+// running them all. Input: fuzz_common.hpp's read_scene and read_shading_point, the part's byte,
+// then check_batch's input, or a byte of choices (and the shadow options, then the emission
+// normal's side; or the anisotropic part's tangent and second roughness). Build and run:
+// tests/fuzz/run.sh (README.md there).
 #include "fuzz_batch.hpp"
 #include "fuzz_common.hpp"
 
@@ -25,6 +26,7 @@
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_two_lobe.hpp>
 #include <ltc/shading/cosine_lobe_polygon_light.hpp>
+#include <ltc/shading/ggx_anisotropic_model.hpp>
 #include <ltc/shading/lights/light_error.hpp>
 #include <ltc/shading/lights/polygon_light.hpp>
 #include <ltc/shading/polygon_light.hpp>
@@ -280,14 +282,46 @@ void check_shadowed(FuzzedDataProvider& in, const scene<T>& sc, const shading_po
     }
 }
 
+// Anisotropic GGX (ltc::ggx::anisotropic) with any finite tangent (zero, along N, huge or tiny
+// included) and second roughness: the polygon light with one horizon-clipping strategy, or (`lanes`,
+// where the polygon has four vertices or more) a quad light (its first four) 17 times over the
+// point through batch::shade's lanes with one instruction set: finite.
+template <typename T>
+void check_anisotropic(FuzzedDataProvider& in, const std::vector<glm::vec<3, T>>& v, const shading_point<T>& s,
+                       ltc::horizon_clipping clip, ltc::batch::isa isa, bool lanes) {
+    using vec3 = glm::vec<3, T>;
+    const vec3 tangent(finite_value<T>(in), finite_value<T>(in), finite_value<T>(in));
+    const ltc::surface<T> a{s.P, s.N, s.V, s.roughness, vec3(T(0.04)), vec3(T(0.5)), tangent, in.ConsumeProbability<T>()};
+    const std::size_t n = v.size();
+    if (n == 0) return;
+    if (!lanes || n < 4) {
+        const auto r = ltc::shade<ltc::ggx::anisotropic>(a, ltc::polygon_light<T>::two_sided(v.data(), n, vec3(T(1))),
+                                                         ltc::shade_options{clip});
+        require_finite(r.specular, "anisotropic GGX specular");
+        require_finite(r.diffuse, "anisotropic GGX diffuse");
+        return;
+    }
+    constexpr std::size_t count = batch_results<T>::count;
+    std::vector<T> q[12];
+    for (std::size_t j = 0; j < count; ++j)
+        for (int k = 0; k < 4; ++k) q[k].push_back(v[k].x), q[4 + k].push_back(v[k].y), q[8 + k].push_back(v[k].z);
+    const T* x[4] = {q[0].data(), q[1].data(), q[2].data(), q[3].data()};
+    const T* y[4] = {q[4].data(), q[5].data(), q[6].data(), q[7].data()};
+    const T* z[4] = {q[8].data(), q[9].data(), q[10].data(), q[11].data()};
+    batch_results<T> res;
+    ltc::batch::shade<ltc::ggx::anisotropic>(
+        a, ltc::batch::polygon_lights<T, 4>::two_sided(count, x, y, z, ltc::batch::uniform(vec3(T(1)))), res.out, isa);
+    res.require_finite("anisotropic GGX batch over lights");
+}
+
 template <typename T>
 void run(FuzzedDataProvider& in) {
     const scene<T> sc = read_scene<T>(in);
     const shading_point<T> s = read_shading_point<T>(in);
-    // One part per input (a fuzzed byte): a point's shading and its shadows, batch shading, or the
-    // batch integrals. Each costs about as much as the others; run together, they made an input
+    // One part per input (a fuzzed byte): a point's shading and its shadows, batch shading, the
+    // batch integrals, or anisotropic GGX. Each costs about as much as the others; run together, they made an input
     // costly (the harness's own work, and libFuzzer's per-edge bookkeeping of all their code).
-    const unsigned part = in.ConsumeIntegral<std::uint8_t>() % 3u;
+    const unsigned part = in.ConsumeIntegral<std::uint8_t>() % 4u;
     if (part == 2) {
         check_batch<T>(in, sc.m, sc.v);
         return;
@@ -308,6 +342,14 @@ void run(FuzzedDataProvider& in) {
     }
     const ltc::batch::isa isa =
         ltc::batch::instruction_sets[((choice >> 2) & 3u) % std::size(ltc::batch::instruction_sets)];
+    if (part == 3) {
+        constexpr ltc::horizon_clipping clips[] = {ltc::horizon_clipping::ltc_space,
+                                                   ltc::horizon_clipping::shading_first,
+                                                   ltc::horizon_clipping::sphere_analytic,
+                                                   ltc::horizon_clipping::sphere_table};
+        check_anisotropic<T>(in, sc.v, s, clips[choice & 3u], isa, (choice & 64u) != 0u);
+        return;
+    }
     const int lobes = 1 + int(((choice >> 4) & 3u) % 3u);
     if ((choice & 64u) != 0u && sc.v.size() >= 4)
         check_quad_light_batch<T>(sc.v, s, isa, lobes);

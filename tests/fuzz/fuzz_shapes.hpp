@@ -12,14 +12,22 @@
 //     ellipse_vector_form_factor: finite, within [-1, 1];
 //   - integrate_disk, integrate_disk_2017 and integrate_disk_polygon (8 edges): finite, >= 0
 //     after sidedness, at most 1 (plus rounding);
-//   - shade_line_light, shade_tube_light, shade_disk_light, shade_sphere_light: finite, >= 0 per
-//     channel.
+//   - shade_line_light, shade_tube_light, shade_disk_light, shade_sphere_light, and the same
+//     lights through ltc::shade<ltc::ggx::anisotropic> with a fuzzed tangent and second
+//     roughness (consumed last): finite, >= 0 per channel.
 #pragma once
 
 #include "fuzz_common.hpp"
 
 #include <ltc/core/ellipse_integral.hpp>
 #include <ltc/core/line_integral.hpp>
+#include <ltc/shading/ggx_anisotropic_model.hpp>
+#include <ltc/shading/lights/disk_light.hpp>
+#include <ltc/shading/lights/light_error.hpp>
+#include <ltc/shading/lights/line_light.hpp>
+#include <ltc/shading/lights/sphere_light.hpp>
+#include <ltc/shading/lights/tube_light.hpp>
+#include <ltc/shading/shade.hpp>
 #include <ltc/shading/disk_light.hpp>
 #include <ltc/shading/line_light.hpp>
 #include <ltc/shading/sphere_light.hpp>
@@ -87,6 +95,27 @@ void check_shapes(FuzzedDataProvider& in, const glm::mat<3, 3, T>& m, const std:
     const auto sphere = ltc::shade_sphere_light(P, N, V, roughness, F0, albedo, radiance, a, radius);
     require_non_negative(sphere.specular, "sphere specular");
     require_non_negative(sphere.diffuse, "sphere diffuse");
+    // The same lights through ltc::shade with anisotropic GGX and any finite tangent.
+    const vec3 tangent(finite_value<T>(in), finite_value<T>(in), finite_value<T>(in));
+    const ltc::surface<T> s{P, N, V, roughness, F0, albedo, tangent, in.ConsumeProbability<T>()};
+    using aniso = ltc::ggx::anisotropic;
+    const auto check = [](const ltc::shading_result<T>& r, const char* specular, const char* diffuse) {
+        require_non_negative(r.specular, specular);
+        require_non_negative(r.diffuse, diffuse);
+    };
+    check(ltc::shade<aniso>(s, ltc::line_light<T>{a, b, radius, radiance}), "anisotropic line specular",
+          "anisotropic line diffuse");
+    check(ltc::shade<aniso>(s, ltc::tube_light<T>{a, b, radius, radiance}), "anisotropic tube specular",
+          "anisotropic tube diffuse");
+    check(ltc::shade<aniso>(s, ltc::sphere_light<T>{a, radius, radiance}), "anisotropic sphere specular",
+          "anisotropic sphere diffuse");
+    try {
+        const auto disk = side == ltc::sidedness::one_sided ? ltc::disk_light<T>::one_sided(a, b, radius, radiance)
+                                                            : ltc::disk_light<T>::two_sided(a, b, radius, radiance);
+        check(ltc::shade<aniso>(s, disk), "anisotropic disk specular", "anisotropic disk diffuse");
+    } catch (const ltc::invalid_light&) {
+        // a normal the disk refuses (zero)
+    }
 }
 
 }  // namespace ltc_fuzz

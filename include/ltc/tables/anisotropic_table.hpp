@@ -104,12 +104,7 @@ class anisotropic_table {
     constexpr int size() const { return size_; }
 
     /// The stored float of channel c at node (i, j, k, l), i >= j.
-    constexpr float stored(int i, int j, int k, int l, int c) const {
-        return data_[((anisotropic_layout::pair_index(i, j) * std::size_t(size_) + std::size_t(k)) * std::size_t(size_) +
-                      std::size_t(l)) *
-                         channels +
-                     std::size_t(c)];
-    }
+    constexpr float stored(int i, int j, int k, int l, int c) const { return data_[offset(i, j, k, l) + std::size_t(c)]; }
 
     /// The 11 channels of any node (i, j, k, l): stored, or by the swap symmetry for i < j.
     template <typename T>
@@ -146,7 +141,8 @@ class anisotropic_table {
         const T st = detail::saturate(theta / T(anisotropic_layout::theta_max)) * n1;
         // phi mod 2 pi in [0, 2 pi), then into [0, pi/2] by the mirrors.
         const T two_pi = T(2) * pi<T>();
-        T p = std::isfinite(phi_v) ? std::fmod(phi_v, two_pi) : T(0);
+        // fmod(p, 2 pi) is p itself for |p| < 2 pi (view_azimuth's range): skip the call there.
+        T p = phi_v > -two_pi && phi_v < two_pi ? phi_v : std::isfinite(phi_v) ? std::fmod(phi_v, two_pi) : T(0);
         if (p < T(0)) p += two_pi;
         const bool fy = p > pi<T>();
         if (fy) p = two_pi - p;
@@ -165,17 +161,34 @@ class anisotropic_table {
         for (int d = 0; d < 4; ++d) tol[d] = T(8) * eps * (s[d] > T(1) ? s[d] : T(1));
         tol[2] = T(4) * eps * (st + g * g / (st > T(1) ? st : T(1)) + g);
         for (int d = 0; d < 4; ++d) detail::axis_position(s[d], size_, tol[d], i0[d], f[d]);
-        const auto up = [&](int d) { return size_ > 1 ? i0[d] + 1 : i0[d]; };
-        // corner[b] for b = (bx << 3) | (by << 2) | (bt << 1) | bp, then lerps along phi, theta, y, x.
-        T corner[16][channels];
-        for (int b = 0; b < 16; ++b)
-            node((b & 8) ? up(0) : i0[0], (b & 4) ? up(1) : i0[1], (b & 2) ? up(2) : i0[2], (b & 1) ? up(3) : i0[3],
-                 corner[b]);
-        for (int d = 3, width = 16; d >= 0; --d, width /= 2)
-            for (int b = 0; b < width / 2; ++b)
-                for (int ch = 0; ch < channels; ++ch)
-                    corner[b][ch] = (T(1) - f[d]) * corner[2 * b][ch] + f[d] * corner[2 * b + 1][ch];
-        ltc_coefficients<T> r = coefficients(corner[0]);
+        // The 16 corners' weights are products of the axes' (1 - f, f); the sum of weight times
+        // node is quadrilinear interpolation (at a node, f = 0 on every axis: the node itself).
+        // A node with i < j is read by the swap symmetry (node()): its mirrored phi node, and M's
+        // channels permuted as S M S.
+        static constexpr int swapped[channels] = {4, 3, 5, 1, 0, 2, 7, 6, 8, 9, 10};
+        const int last = size_ > 1 ? 1 : 0;
+        T w[4][2];
+        for (int d = 0; d < 4; ++d) w[d][0] = T(1) - f[d], w[d][1] = f[d];
+        T acc[channels] = {};
+        for (int bx = 0; bx <= last; ++bx)
+            for (int by = 0; by <= last; ++by) {
+                const int i = i0[0] + bx, j = i0[1] + by;
+                const bool swap = i < j;
+                const T wxy = w[0][bx] * w[1][by];
+                const float* pair = data_ + (swap ? offset(j, i, 0, 0) : offset(i, j, 0, 0));
+                for (int bt = 0; bt <= last; ++bt)
+                    for (int bp = 0; bp <= last; ++bp) {
+                        const int k = i0[2] + bt, l = i0[3] + bp;
+                        const T wb = wxy * w[2][bt] * w[3][bp];
+                        const float* v = pair + (std::size_t(k) * std::size_t(size_) +
+                                                 std::size_t(swap ? size_ - 1 - l : l)) * channels;
+                        if (!swap)
+                            for (int ch = 0; ch < channels; ++ch) acc[ch] += wb * T(v[ch]);
+                        else
+                            for (int ch = 0; ch < channels; ++ch) acc[ch] += wb * T(v[swapped[ch]]);
+                    }
+            }
+        ltc_coefficients<T> r = coefficients(acc);
         r.m_inv = detail::mirror(r.m_inv, fx, fy);
         return r;
     }
@@ -192,6 +205,13 @@ class anisotropic_table {
     }
 
   private:
+    /// The index of channel 0 of node (i, j, k, l), i >= j.
+    constexpr std::size_t offset(int i, int j, int k, int l) const {
+        return ((anisotropic_layout::pair_index(i, j) * std::size_t(size_) + std::size_t(k)) * std::size_t(size_) +
+                std::size_t(l)) *
+               channels;
+    }
+
     /// m_inv = M^-1 from the channels (adjugate: rows are cross products of M's columns).
     template <typename T>
     static ltc_coefficients<T> coefficients(const T* v) {
