@@ -36,6 +36,7 @@ SHADING_ROWS = [
     ("BM_shade<ltc::ggx::one_lobe>", "shade<ggx::one_lobe>"),
     ("BM_shade<ltc::ggx::ltc_and_cosine>", "shade<ggx::ltc_and_cosine>"),
     ("BM_shade<ltc::ggx::two_lobes>", "shade<ggx::two_lobes>"),
+    ("BM_shade<ltc::ggx::anisotropic>", "shade<ggx::anisotropic>"),
     ("BM_batch_shading<isa::baseline>", "batch, baseline (SSE2)"),
     ("BM_batch_shading<isa::avx2>", "batch, AVX2"),
     ("BM_batch_shading<isa::avx512>", "batch, AVX-512"),

@@ -38,8 +38,9 @@ class sample_set {
     std::size_t size() const { return x_.size(); }
 
     /// What all() returns: the estimates sum_i w_i g(L_i) of the integrals of |f - m D| (l1),
-    /// |f - m D|^3 (l3), f (f1) and f^3 (f3), m the magnitude and D the LTC of m_inv. Both l3()
-    /// and all() assume m_inv has the structure of an isotropic LTC (invert_structured).
+    /// |f - m D|^3 (l3), f (f1) and f^3 (f3), m the magnitude and D the LTC of m_inv. l3() and
+    /// all() of (m_inv, magnitude) assume m_inv has the structure of an isotropic LTC
+    /// (invert_structured); their overloads of (m_inv, |det m_inv|, magnitude) take any m_inv.
     struct sums {
         double l1 = 0, l3 = 0, f1 = 0, f3 = 0;
     };
@@ -64,21 +65,31 @@ class sample_set {
             const double diff = std::abs(fs[i] - g);
             return ws[i] * diff * diff * diff;
         };
-        const std::size_t n = x_.size();
-        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-        std::size_t i = 0;
-        for (; i + 4 <= n; i += 4) {
-            s0 += term(i);
-            s1 += term(i + 1);
-            s2 += term(i + 2);
-            s3 += term(i + 3);
-        }
-        for (; i < n; ++i) s0 += term(i);
-        return (s0 + s1) + (s2 + s3);
+        return sum4(term);
+    }
+
+    /// The L3 error for any m_inv (anisotropic LTCs), |det m_inv| given.
+    double l3(const glm::dmat3& m_inv, double abs_det, double magnitude) const {
+        const glm::dmat3& a = m_inv;
+        const double k = magnitude * abs_det / pi<double>();
+        const auto term = [&](std::size_t i) {
+            const double x = a[0][0] * x_[i] + a[1][0] * y_[i] + a[2][0] * z_[i];
+            const double y = a[0][1] * x_[i] + a[1][1] * y_[i] + a[2][1] * z_[i];
+            const double z = a[0][2] * x_[i] + a[1][2] * y_[i] + a[2][2] * z_[i];
+            const double l2 = x * x + y * y + z * z;
+            const double d = std::abs(f_[i] - k * std::max(z, 0.0) / (l2 * l2));
+            return w_[i] * d * d * d;
+        };
+        return sum4(term);
     }
 
     sums all(const glm::dmat3& m_inv, double magnitude) const {
-        const double k = magnitude * invert_structured(m_inv).abs_determinant / pi<double>();
+        return all(m_inv, invert_structured(m_inv).abs_determinant, magnitude);
+    }
+
+    /// all() for any m_inv, |det m_inv| given.
+    sums all(const glm::dmat3& m_inv, double abs_det, double magnitude) const {
+        const double k = magnitude * abs_det / pi<double>();
         sums s;
         for (std::size_t i = 0; i < x_.size(); ++i) {
             const glm::dvec3 w = m_inv * glm::dvec3(x_[i], y_[i], z_[i]);
@@ -94,6 +105,23 @@ class sample_set {
     }
 
   private:
+    /// sum_i term(i) in four partial sums in a fixed order (deterministic, and independent terms
+    /// that the compiler can vectorize).
+    template <typename Term>
+    double sum4(const Term& term) const {
+        const std::size_t n = x_.size();
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        std::size_t i = 0;
+        for (; i + 4 <= n; i += 4) {
+            s0 += term(i);
+            s1 += term(i + 1);
+            s2 += term(i + 2);
+            s3 += term(i + 3);
+        }
+        for (; i < n; ++i) s0 += term(i);
+        return (s0 + s1) + (s2 + s3);
+    }
+
     std::vector<double> x_, y_, z_, f_, w_;
 };
 

@@ -17,6 +17,8 @@
 #include <ltc/fitting/fit_table.hpp>  // progress_callback, detail::run_fit_threads
 #include <ltc/fitting/integral_objective.hpp>
 #include <ltc/fitting/ltc_parameters.hpp>  // normalize_or_zero, sample_cosine
+#include <ltc/fitting/error_metric.hpp>  // sample_set
+#include <ltc/fitting/moments.hpp>
 #include <ltc/fitting/nelder_mead.hpp>
 #include <ltc/fitting/options.hpp>
 #include <ltc/tables/anisotropic_table.hpp>
@@ -109,98 +111,17 @@ inline glm::dvec3 anisotropic_node_view(int k, int l, int n) {
     return glm::dvec3(s * std::cos(p), s * std::sin(p), c);
 }
 
-struct anisotropic_moments {
-    double magnitude = 0;                   ///< integral of f
-    double fresnel = 0;                     ///< integral of f (1 - V.H)^5
-    glm::dvec3 average_direction{0, 0, 1};  ///< integral of f L, normalized
-};
+/// The moments of ltc/fitting/moments.hpp; the average direction keeps its y.
+using anisotropic_moments = moments;
 
 /// ltc/fitting/moments.hpp's quadrature for an alpha of any type, the average direction in 3D.
 template <template <typename> class Brdf>
 anisotropic_moments compute_anisotropic_moments(const glm::dvec3& V, const anisotropic_alpha& alpha, int n) {
-    using B = Brdf<double>;
-    double m = 0, fr = 0;
-    glm::dvec3 dir(0);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const glm::dvec2 u((i + 0.5) / n, (j + 0.5) / n);
-            const glm::dvec3 L = B::sample(V, u, alpha);
-            const double p = B::pdf(V, L, alpha);
-            if (!(p > 0) || !(L.z > 0)) continue;
-            const double w = B::eval(V, L, alpha) / p;
-            if (!(w > 0) || !std::isfinite(w)) continue;
-            const glm::dvec3 H = normalize_or_zero(V + L);
-            const double c = 1.0 - glm::clamp(glm::dot(V, H), 0.0, 1.0);
-            const double c2 = c * c;
-            m += w;
-            fr += w * c2 * c2 * c;
-            dir += w * L;
-        }
-    anisotropic_moments r;
-    const double inv = 1.0 / (double(n) * double(n));
-    r.magnitude = m * inv;
-    r.fresnel = fr * inv;
-    const double len = glm::length(dir);
-    r.average_direction = len > 0 ? dir / len : glm::dvec3(0, 0, 1);
-    return r;
+    return detail::moments_by_quadrature<Brdf>(V, alpha, n, true);
 }
 
-/// error_metric.hpp's frozen MIS sample set, for a full m_inv.
-class anisotropic_sample_set {
-  public:
-    struct sums {
-        double l1 = 0, l3 = 0, f1 = 0, f3 = 0;
-    };
-
-    void clear() { x_.clear(), y_.clear(), z_.clear(), f_.clear(), w_.clear(); }
-    void add(const glm::dvec3& L, double f, double w) {
-        x_.push_back(L.x), y_.push_back(L.y), z_.push_back(L.z), f_.push_back(f), w_.push_back(w);
-    }
-    std::size_t size() const { return x_.size(); }
-
-    /// sum_i w_i |f_i - magnitude D(L_i)|^3, D the LTC of m_inv (|det| its determinant's).
-    double l3(const glm::dmat3& m_inv, double abs_det, double magnitude) const {
-        const glm::dmat3& a = m_inv;
-        const double k = magnitude * abs_det / pi<double>();
-        const auto term = [&](std::size_t i) {
-            const double x = a[0][0] * x_[i] + a[1][0] * y_[i] + a[2][0] * z_[i];
-            const double y = a[0][1] * x_[i] + a[1][1] * y_[i] + a[2][1] * z_[i];
-            const double z = a[0][2] * x_[i] + a[1][2] * y_[i] + a[2][2] * z_[i];
-            const double l2 = x * x + y * y + z * z;
-            const double d = std::abs(f_[i] - k * std::max(z, 0.0) / (l2 * l2));
-            return w_[i] * d * d * d;
-        };
-        const std::size_t n = x_.size();
-        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-        std::size_t i = 0;
-        for (; i + 4 <= n; i += 4) {
-            s0 += term(i);
-            s1 += term(i + 1);
-            s2 += term(i + 2);
-            s3 += term(i + 3);
-        }
-        for (; i < n; ++i) s0 += term(i);
-        return (s0 + s1) + (s2 + s3);
-    }
-
-    sums all(const glm::dmat3& m_inv, double abs_det, double magnitude) const {
-        const double k = magnitude * abs_det / pi<double>();
-        sums s;
-        for (std::size_t i = 0; i < x_.size(); ++i) {
-            const glm::dvec3 v = m_inv * glm::dvec3(x_[i], y_[i], z_[i]);
-            const double l2 = glm::dot(v, v);
-            const double d = std::abs(f_[i] - k * std::max(v.z, 0.0) / (l2 * l2));
-            s.l1 += w_[i] * d;
-            s.l3 += w_[i] * d * d * d;
-            s.f1 += w_[i] * f_[i];
-            s.f3 += w_[i] * f_[i] * f_[i] * f_[i];
-        }
-        return s;
-    }
-
-  private:
-    std::vector<double> x_, y_, z_, f_, w_;
-};
+/// error_metric.hpp's frozen MIS sample set (its overloads for a full m_inv).
+using anisotropic_sample_set = sample_set;
 
 /// n x n midpoints through the BRDF's sampler and n x n through the LTC of M, weights
 /// 1 / (n^2 p_brdf + n^2 p_ltc) (error_metric.hpp's make_sample_set).

@@ -27,10 +27,11 @@ struct moments {
     glm::dvec3 average_direction{0, 0, 1};  ///< integral of f L, y zeroed, normalized
 };
 
-/// Magnitude, Fresnel term and average direction of f(L) = Brdf<double>::eval(V, L, alpha) by the
-/// midpoint rule on an n x n grid through Brdf's importance sampler.
-template <template <typename> class Brdf>
-moments compute_moments(const glm::dvec3& V, double alpha, int n) {
+namespace detail {
+/// The quadrature of the file comment for any parameter type (a scalar alpha, or an anisotropic
+/// pair); keep_y: the average direction keeps its y (no plane of symmetry: anisotropic BRDFs).
+template <template <typename> class Brdf, typename Alpha>
+moments moments_by_quadrature(const glm::dvec3& V, const Alpha& alpha, int n, bool keep_y) {
     using B = Brdf<double>;
     double m = 0, fr = 0;
     glm::dvec3 dir(0);
@@ -54,10 +55,18 @@ moments compute_moments(const glm::dvec3& V, double alpha, int n) {
     const double inv = 1.0 / (double(n) * double(n));
     r.magnitude = m * inv;
     r.fresnel = fr * inv;
-    dir.y = 0;
+    if (!keep_y) dir.y = 0;
     const double len = glm::length(dir);
     r.average_direction = len > 0 ? dir / len : glm::dvec3(0, 0, 1);
     return r;
+}
+}  // namespace detail
+
+/// Magnitude, Fresnel term and average direction of f(L) = Brdf<double>::eval(V, L, alpha) by the
+/// midpoint rule on an n x n grid through Brdf's importance sampler.
+template <template <typename> class Brdf>
+moments compute_moments(const glm::dvec3& V, double alpha, int n) {
+    return detail::moments_by_quadrature<Brdf>(V, alpha, n, false);
 }
 
 }  // namespace fit
