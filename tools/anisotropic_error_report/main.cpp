@@ -11,7 +11,8 @@
 //       -o anisotropic_error_report -pthread   (one line)
 //
 // Grid (local frame: N = +z, tangent +x, V = (sin t cos p, sin t sin p, cos t)): alpha_x, alpha_y
-// in {0.2, 0.35, 0.5, 0.8} (all 16 pairs, mostly between the 8^4 grid's nodes at i / 7),
+// in {0.05, 0.1, 0.2, 0.35, 0.5, 0.8} (all 36 pairs, mostly between the 8^4 grid's nodes at i / 7;
+// 0.05 and 0.1 between its two smoothest nodes, 1e-4 and 1/7, where the lobe changes fastest),
 // theta_v in {15, 40, 65} deg, phi_v in {0, 25, 70, 130, 250} deg (all four quadrants), and 8
 // squares (half-width 0.2 and 0.6 at distance 1, facing the point) centred on: the mirror
 // direction of V (elevation at least 20 deg), the zenith, azimuth phi_v + 90 deg at elevation
@@ -32,7 +33,7 @@
 //
 // Errors: |estimate - truth| / truth over the significant configurations, those whose truth is at
 // least 5% of the directional albedo (the BRDF's, by 128 x 128 quadrature): mean and p95, overall,
-// by theta_v and by the anisotropy max(a) / min(a).
+// by theta_v, by the anisotropy max(a) / min(a), by the smoother alpha and by the placement.
 #include "common/error_summary.hpp"
 #include "common/parallel_for.hpp"
 
@@ -65,7 +66,8 @@ using glm::dvec3;
 constexpr double pi = 3.141592653589793;
 constexpr double deg = pi / 180.0;
 
-double alphas[] = {0.2, 0.35, 0.5, 0.8};
+double alphas[] = {0.05, 0.1, 0.2, 0.35, 0.5, 0.8};
+constexpr int alpha_count = 6;
 double thetas[] = {15, 40, 65};
 double phis[] = {0, 25, 70, 130, 250};
 const double half_widths[] = {0.2, 0.6};
@@ -183,8 +185,8 @@ int main(int argc, char** argv) {
         else if ((a == "--threads" || a == "-j") && i + 1 < argc) threads = unsigned(std::max(1, std::atoi(argv[++i])));
         else if (a == "--list") list = true;
         else if (a == "--at-nodes") {
-            const double an[] = {2, 3, 4, 6}, tn[] = {1, 3, 5}, pn[] = {0, 2, 5, 9, 19};
-            for (int k = 0; k < 4; ++k) alphas[k] = an[k] / 7;
+            const double an[] = {1, 2, 3, 4, 5, 6}, tn[] = {1, 3, 5}, pn[] = {0, 2, 5, 9, 19};
+            for (int k = 0; k < alpha_count; ++k) alphas[k] = an[k] / 7;
             for (int k = 0; k < 3; ++k) thetas[k] = tn[k] / 7 * 0.9999 * 90;
             for (int k = 0; k < 5; ++k) phis[k] = pn[k] / 7 * 90;
         }
@@ -213,8 +215,8 @@ int main(int argc, char** argv) {
     const bool have_kt = kt.load(peers + "/kt2022_alphax_alphay_theta_phi.npy", why);
 
     std::vector<config> grid;
-    for (int ax = 0; ax < 4; ++ax)
-        for (int ay = 0; ay < 4; ++ay)
+    for (int ax = 0; ax < alpha_count; ++ax)
+        for (int ay = 0; ay < alpha_count; ++ay)
             for (int t = 0; t < 3; ++t)
                 for (int p = 0; p < 5; ++p)
                     for (int pl = 0; pl < 4; ++pl)
@@ -256,7 +258,7 @@ int main(int argc, char** argv) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     std::printf("Anisotropic GGX: LTC shading of squares vs Monte Carlo (F0 = 1)\n"
-                "grid: alpha_x, alpha_y {0.2,0.35,0.5,0.8} x theta_v {15,40,65} x phi_v {0,25,70,130,250} deg x 8 squares\n"
+                "grid: alpha_x, alpha_y {0.05,0.1,0.2,0.35,0.5,0.8} x theta_v {15,40,65} x phi_v {0,25,70,130,250} deg x 8 squares\n"
                 "      (mirror / zenith / side / tangent, half-width 0.2 / 0.6), %zu above the horizon; %llu MC iterations\n"
                 "evaluated in %.1f s on %u thread%s\n",
                 grid.size(), samples, seconds, threads, threads == 1 ? "" : "s");
@@ -297,15 +299,21 @@ int main(int argc, char** argv) {
         std::snprintf(label, sizeof label, "theta_v %.0f", thetas[t]);
         row(label, idx, false);
     }
-    const double ratios[][2] = {{1, 1}, {1.01, 2}, {2.01, 5}};
-    const char* ratio_names[] = {"isotropic (ax == ay)", "anisotropy <= 2", "anisotropy 2.3 .. 4"};
-    for (int r = 0; r < 3; ++r) {
+    const double ratios[][2] = {{1, 1}, {1.01, 2}, {2.01, 5}, {5.01, 100}};
+    const char* ratio_names[] = {"isotropic (ax == ay)", "anisotropy <= 2", "anisotropy 2.3 .. 4", "anisotropy 5 .. 16"};
+    for (int r = 0; r < 4; ++r) {
         std::vector<std::size_t> idx;
         for (std::size_t i : sig) {
             const double q = std::max(alphas[grid[i].ax], alphas[grid[i].ay]) / std::min(alphas[grid[i].ax], alphas[grid[i].ay]);
             if (q >= ratios[r][0] && q <= ratios[r][1]) idx.push_back(i);
         }
         row(ratio_names[r], idx, r == 0);
+    }
+    for (int lo = 0; lo < 2; ++lo) {  // the smoother alpha: between the two smoothest nodes, or not
+        std::vector<std::size_t> idx;
+        for (std::size_t i : sig)
+            if ((std::min(alphas[grid[i].ax], alphas[grid[i].ay]) < 1.0 / 7) == (lo == 0)) idx.push_back(i);
+        row(lo == 0 ? "min(alpha) < 1/7" : "min(alpha) >= 1/7", idx, false);
     }
     for (int pl = 0; pl < 4; ++pl) {
         std::vector<std::size_t> idx;
