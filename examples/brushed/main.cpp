@@ -66,7 +66,7 @@ std::vector<double> render_ltc(const std::vector<pixel_hit>& hits, const materia
     return out;
 }
 
-/// e = |a - ref| / max(ref, floor) over the lit pixels (floor, ref >= floor).
+/// (a - ref) / ref, or its absolute value, over the lit pixels (floor, ref >= floor).
 std::vector<double> relative_errors(const std::vector<pixel_hit>& hits, const std::vector<double>& a,
                                     const std::vector<reference_value>& ref, double floor, bool signed_error = false) {
     std::vector<double> e;
