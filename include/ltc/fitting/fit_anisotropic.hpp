@@ -360,27 +360,45 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
 /// the node's frame). It fits the node for the interpolation that the table makes.
 template <template <typename> class Brdf>
 anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alpha& alpha,
-                                      const anisotropic_alpha& alpha_mid, const anisotropic_moments& mom, int dims,
+                                      const anisotropic_alpha& alpha_far, const anisotropic_moments& mom, int dims,
                                       anisotropic_parameters p, const glm::dmat3& neighbour,
-                                      const anisotropic_options& opt) {
+                                      const glm::dmat3& reference, const anisotropic_options& opt) {
     anisotropic_node r;
     r.magnitude = mom.magnitude;
     r.fresnel = mom.fresnel;
-    const anisotropic_moments mid_mom = compute_anisotropic_moments<Brdf>(V, alpha_mid, opt.moment_samples);
-    anisotropic_objective node_objective, mid_objective;
+    constexpr int between = 1;
+    const double node_weight = 1.0;
+    const double reference_weight = 10.0;
+    anisotropic_objective node_objective, mid_objective[between];
     node_objective.init<Brdf>(V, alpha, mom, p.axis, opt);
-    mid_objective.init<Brdf>(V, alpha_mid, mid_mom, p.axis, opt);
-    const auto mid_matrix = [&](const glm::dmat3& m_inv) {
-        return 0.5 * (canonical_matrix(canonical_inverse(m_inv)) + neighbour);
+    const auto weight_of = [](int b) { return (double(b) + 0.5) / double(between); };
+    for (int b = 0; b < between; ++b) {
+        const double t = weight_of(b);
+        const anisotropic_alpha a{alpha.x + t * (alpha_far.x - alpha.x), alpha.y + t * (alpha_far.y - alpha.y)};
+        mid_objective[b].init<Brdf>(V, a, compute_anisotropic_moments<Brdf>(V, a, opt.moment_samples), p.axis, opt);
+    }
+    const auto mid_matrix = [&](const glm::dmat3& m_inv, int b) {
+        const double t = weight_of(b);
+        return (1 - t) * canonical_matrix(canonical_inverse(m_inv)) + t * neighbour;
     };
     double step = opt.initial_step;
     for (int round = 0; round < std::max(1, opt.rounds); ++round) {
         node_objective.refresh<Brdf>(p.matrix());
-        mid_objective.refresh<Brdf>(mid_matrix(full_inverse(p.matrix()).inverse));
+        for (int b = 0; b < between; ++b) mid_objective[b].refresh<Brdf>(mid_matrix(full_inverse(p.matrix()).inverse, b));
         const auto objective_of = [&](const glm::dmat3& m_inv, double abs_det) {
-            const full_inverse_result mid = full_inverse(mid_matrix(m_inv));
-            if (!mid.ok) return std::numeric_limits<double>::infinity();
-            return node_objective(m_inv, abs_det) + mid_objective(mid.inverse, 1.0 / mid.abs_determinant);
+            double e = node_weight > 0 ? node_weight * node_objective(m_inv, abs_det) : 0.0;
+            if (reference_weight > 0) {
+                const glm::dmat3 d = canonical_matrix(canonical_inverse(m_inv)) - reference;
+                double d2 = 0;
+                for (int c = 0; c < 3; ++c) d2 += glm::dot(d[c], d[c]);
+                e += reference_weight * d2;
+            }
+            for (int b = 0; b < between; ++b) {
+                const full_inverse_result mid = full_inverse(mid_matrix(m_inv, b));
+                if (!mid.ok) return std::numeric_limits<double>::infinity();
+                e += mid_objective[b](mid.inverse, 1.0 / mid.abs_determinant);
+            }
+            return e;
         };
         if (dims == 7) p = anisotropic_minimize<7>(objective_of, p, step, opt, r.evaluations);
         else if (dims == 4) p = anisotropic_minimize<4>(objective_of, p, step, opt, r.evaluations);
@@ -436,8 +454,9 @@ inline bool parameters_from_matrix(const glm::dmat3& M, const glm::dvec3& axis, 
 /// A thin node's neighbour (detail::anisotropic_fit_thin): the roughness halfway to it and its
 /// canonical matrix in the node's frame.
 struct anisotropic_thin {
-    anisotropic_alpha alpha_mid;
+    anisotropic_alpha alpha_far;
     glm::dmat3 neighbour{1.0};
+    glm::dmat3 reference{1.0};
 };
 
 /// Fits one node: view V (unit, V.z > 0), roughness alpha, the parameters that `symmetry` frees,
@@ -470,7 +489,7 @@ anisotropic_node fit_anisotropic_node(const glm::dvec3& V, const anisotropic_alp
         if (equal) p.m22 = p.m11;
     }
     if (!(p.axis.z > 0)) p.axis = glm::dvec3(0, 0, 1);
-    if (thin) return detail::anisotropic_fit_thin<Brdf>(V, alpha, thin->alpha_mid, mom, dims, p, thin->neighbour, opt);
+    if (thin) return detail::anisotropic_fit_thin<Brdf>(V, alpha, thin->alpha_far, mom, dims, p, thin->neighbour, thin->reference, opt);
     anisotropic_node r = detail::anisotropic_fit_from<Brdf>(V, alpha, mom, dims, p, opt);
     if (!(r.relative_l1 <= 1.0)) {
         anisotropic_parameters fresh;
@@ -610,8 +629,11 @@ anisotropic_table_fit fit_anisotropic_table(const anisotropic_options& opt, cons
                         const anisotropic_node& ref = tab.at(ch.i, 1, k, ch.l);
                         anisotropic_thin thin;
                         thin.neighbour = swap ? ltc::detail::swap_xy(ref.matrix) : ref.matrix;
-                        const double t = 0.5 * (anisotropic_node_alpha(1, n, opt.alpha_min) + opt.alpha_min);
-                        thin.alpha_mid = swap ? anisotropic_alpha{t, a.y} : anisotropic_alpha{a.x, t};
+                        const glm::dmat3 far = ch.i >= 2 ? tab.at(ch.i, 2, k, ch.l).matrix
+                                                         : ltc::detail::swap_xy(tab.at(2, ch.i, k, n - 1 - ch.l).matrix);
+                        thin.reference = 2.0 * thin.neighbour - (swap ? ltc::detail::swap_xy(far) : far);
+                        const double t = anisotropic_node_alpha(1, n, opt.alpha_min);
+                        thin.alpha_far = swap ? anisotropic_alpha{t, a.y} : anisotropic_alpha{a.x, t};
                         r = fit_anisotropic_node<Brdf>(V, a, sym, p, opt, &thin.neighbour, &thin);
                     } else {
                         r = fit_anisotropic_node<Brdf>(V, a, sym, p, opt);
