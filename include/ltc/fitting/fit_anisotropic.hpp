@@ -63,6 +63,13 @@
 // thread count. A node whose relative L1 error exceeds 1 is refitted from a fresh start (an
 // isotropic lobe of width max(alpha_x, alpha_y) on the average direction) and the better kept.
 //
+// Thin nodes (j = 0 < i: alpha_y = alpha_min, a lobe that is almost a curve) come after all the
+// other chains, each started from node (i, 1, k, l) and fitted for the table's interpolation
+// (detail::anisotropic_fit_thin): its own objective, the objective halfway to (i, 1, k, l) of the
+// mean of both matrices, and a pull towards the linear extrapolation 2 M(i,1) - M(i,2). The
+// node's own L3 distance is nearly flat there and its minimum a sheared matrix far from the
+// neighbours, and the lobes between the two nodes, not the degenerate one, are what a shader sees.
+//
 // Degenerate cases: alpha below options::alpha_min is clamped (node 0 of each alpha axis);
 // theta_v stops at theta_max = 0.9999 pi/2 (V.z = 0 leaves rho undefined); with an odd size the
 // diagonal's middle phi node (phi = pi/4) is fitted without the swap constraint.
@@ -353,11 +360,13 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
     return r;
 }
 
-/// A thin node (one alpha at alpha_min, the lobe almost a curve, where the L3 distance is nearly
-/// flat in the thin direction and prefers sheared matrices unrelated to the neighbours): the node's
-/// objective plus that of the lobe halfway to the neighbour node, alpha_mid, for the matrix that
-/// the table interpolates there, the mean of both canonical matrices (`neighbour`, canonical, in
-/// the node's frame). It fits the node for the interpolation that the table makes.
+/// A thin node (one alpha at alpha_min, the other not: the lobe almost a curve), after the
+/// file comment: the node's objective, plus that of the lobe at the roughness halfway to the
+/// neighbour node (alpha_far) under the matrix the table interpolates there (the mean of the
+/// canonical matrices, `neighbour` canonical in the node's frame), plus reference_weight times
+/// the squared distance of the canonical matrix to `reference` (the linear extrapolation of the
+/// two neighbours): the L3 distance alone is nearly flat in the thin direction and prefers
+/// sheared matrices unrelated to the neighbours, which the table cannot interpolate.
 template <template <typename> class Brdf>
 anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alpha& alpha,
                                       const anisotropic_alpha& alpha_far, const anisotropic_moments& mom, int dims,
@@ -366,9 +375,9 @@ anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alp
     anisotropic_node r;
     r.magnitude = mom.magnitude;
     r.fresnel = mom.fresnel;
-    constexpr int between = 1;
+    constexpr int between = 1;         // points between the node and its neighbour (midpoint rule)
     const double node_weight = 1.0;
-    const double reference_weight = 10.0;
+    const double reference_weight = 100.0;  // strong: only the objective's flat directions move it
     anisotropic_objective node_objective, mid_objective[between];
     node_objective.init<Brdf>(V, alpha, mom, p.axis, opt);
     const auto weight_of = [](int b) { return (double(b) + 0.5) / double(between); };
