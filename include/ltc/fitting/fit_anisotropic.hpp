@@ -65,8 +65,9 @@
 //
 // Thin nodes (j = 0 < i: alpha_y = alpha_min, a lobe that is almost a curve) come after all the
 // other chains, each started from node (i, 1, k, l) and fitted for the table's interpolation
-// (detail::anisotropic_fit_thin): its own objective, the objective halfway to (i, 1, k, l) of the
-// mean of both matrices, and a pull towards the linear extrapolation 2 M(i,1) - M(i,2). The
+// (detail::anisotropic_fit_thin): its own objective, the objectives of the lobes a quarter and
+// three quarters of the way to (i, 1, k, l) under the matrices that the lookup interpolates
+// there, and a pull towards the linear extrapolation 2 M(i,1) - M(i,2). The
 // node's own L3 distance is nearly flat there and its minimum a sheared matrix far from the
 // neighbours, and the lobes between the two nodes, not the degenerate one, are what a shader sees.
 //
@@ -360,13 +361,14 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
     return r;
 }
 
-/// A thin node (one alpha at alpha_min, the other not: the lobe almost a curve), after the
-/// file comment: the node's objective, plus that of the lobe at the roughness halfway to the
-/// neighbour node (alpha_far) under the matrix the table interpolates there (the mean of the
-/// canonical matrices, `neighbour` canonical in the node's frame), plus reference_weight times
-/// the squared distance of the canonical matrix to `reference` (the linear extrapolation of the
-/// two neighbours): the L3 distance alone is nearly flat in the thin direction and prefers
-/// sheared matrices unrelated to the neighbours, which the table cannot interpolate.
+/// A thin node (one alpha at alpha_min, the other not: the lobe almost a curve), after the file
+/// comment: the node's objective, plus that of the lobes a quarter and three quarters of the way
+/// to the neighbour node (alpha_far) under the matrices that the table interpolates there (from
+/// the canonical matrices; `neighbour` canonical, in the node's frame): the midpoint rule for the
+/// interpolated lobes' error; plus a pull, reference_weight times the squared distance of the
+/// canonical matrix to `reference` (the linear extrapolation of the two neighbours). The L3
+/// distance alone is nearly flat in the thin direction, and its minimum there a sheared matrix
+/// that the table cannot interpolate to the neighbours.
 template <template <typename> class Brdf>
 anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alpha& alpha,
                                       const anisotropic_alpha& alpha_far, const anisotropic_moments& mom, int dims,
@@ -375,35 +377,32 @@ anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alp
     anisotropic_node r;
     r.magnitude = mom.magnitude;
     r.fresnel = mom.fresnel;
-    constexpr int between = 1;         // points between the node and its neighbour (midpoint rule)
-    const double node_weight = 1.0;
-    const double reference_weight = 100.0;  // strong: only the objective's flat directions move it
+    constexpr int between = 2;
+    // Strong, so that mainly the objective's flat directions follow it; a weaker pull leaves the
+    // wide axis of a thin lobe narrower than the neighbours' (tools/anisotropic_error_report).
+    const double reference_weight = 100.0;
+    const auto position = [](int b) { return (double(b) + 0.5) / double(between); };  // t in (0, 1)
     anisotropic_objective node_objective, mid_objective[between];
     node_objective.init<Brdf>(V, alpha, mom, p.axis, opt);
-    const auto weight_of = [](int b) { return (double(b) + 0.5) / double(between); };
     for (int b = 0; b < between; ++b) {
-        const double t = weight_of(b);
+        const double t = position(b);
         const anisotropic_alpha a{alpha.x + t * (alpha_far.x - alpha.x), alpha.y + t * (alpha_far.y - alpha.y)};
         mid_objective[b].init<Brdf>(V, a, compute_anisotropic_moments<Brdf>(V, a, opt.moment_samples), p.axis, opt);
     }
-    const auto mid_matrix = [&](const glm::dmat3& m_inv, int b) {
-        const double t = weight_of(b);
-        return (1 - t) * canonical_matrix(canonical_inverse(m_inv)) + t * neighbour;
-    };
+    const auto canonical = [](const glm::dmat3& m_inv) { return canonical_matrix(canonical_inverse(m_inv)); };
+    const auto between_matrix = [&](const glm::dmat3& c, int b) { return (1 - position(b)) * c + position(b) * neighbour; };
     double step = opt.initial_step;
     for (int round = 0; round < std::max(1, opt.rounds); ++round) {
         node_objective.refresh<Brdf>(p.matrix());
-        for (int b = 0; b < between; ++b) mid_objective[b].refresh<Brdf>(mid_matrix(full_inverse(p.matrix()).inverse, b));
+        const glm::dmat3 c0 = canonical(full_inverse(p.matrix()).inverse);
+        for (int b = 0; b < between; ++b) mid_objective[b].refresh<Brdf>(between_matrix(c0, b));
         const auto objective_of = [&](const glm::dmat3& m_inv, double abs_det) {
-            double e = node_weight > 0 ? node_weight * node_objective(m_inv, abs_det) : 0.0;
-            if (reference_weight > 0) {
-                const glm::dmat3 d = canonical_matrix(canonical_inverse(m_inv)) - reference;
-                double d2 = 0;
-                for (int c = 0; c < 3; ++c) d2 += glm::dot(d[c], d[c]);
-                e += reference_weight * d2;
-            }
+            const glm::dmat3 c = canonical(m_inv);
+            const glm::dmat3 d = c - reference;
+            double e = node_objective(m_inv, abs_det);
+            for (int k = 0; k < 3; ++k) e += reference_weight * glm::dot(d[k], d[k]);
             for (int b = 0; b < between; ++b) {
-                const full_inverse_result mid = full_inverse(mid_matrix(m_inv, b));
+                const full_inverse_result mid = full_inverse(between_matrix(c, b));
                 if (!mid.ok) return std::numeric_limits<double>::infinity();
                 e += mid_objective[b](mid.inverse, 1.0 / mid.abs_determinant);
             }
