@@ -469,8 +469,10 @@ struct anisotropic_thin {
 
 /// Fits one node: view V (unit, V.z > 0), roughness alpha, the parameters that `symmetry` frees,
 /// starting from `start` (its axis replaced by the BRDF's average direction; with mirror_y, V.y
-/// must be 0 and the axis's y is zeroed; with normal, V = +z and the axis is +z). See the file
-/// comment for the safeguard.
+/// must be 0 and the axis's y is zeroed; with normal, V = +z and the axis is +z), or from the LTC
+/// of `start_matrix` where given (detail::parameters_from_matrix about that axis). With `thin`,
+/// the thin node's fit (detail::anisotropic_fit_thin, no safeguard: its pull keeps it near the
+/// neighbours). See the file comment for the safeguard.
 template <template <typename> class Brdf>
 anisotropic_node fit_anisotropic_node(const glm::dvec3& V, const anisotropic_alpha& alpha, node_symmetry symmetry,
                                       const anisotropic_parameters& start, const anisotropic_options& opt,
