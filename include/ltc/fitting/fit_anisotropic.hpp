@@ -424,10 +424,6 @@ anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alp
     return r;
 }
 
-}  // namespace detail
-
-namespace detail {
-
 /// The parameters of the LTC of M about `axis` (M's LTC, up to M -> s M Q, s > 0, Q a rotation
 /// about z or a mirror: anisotropic_parameters.hpp): B = R(axis)^T M Q / s with B[1][0] = 0,
 /// m11, m22 > 0 and B[2][2] = 1. False (p unchanged) where no such B exists.
@@ -452,7 +448,9 @@ inline bool parameters_from_matrix(const glm::dmat3& M, const glm::dvec3& axis, 
     q.m32 = c1.z * k;
     q.m13 = c2.x * k;
     q.m23 = c2.y * k;
-    if (!std::isfinite(q.m11 + q.m22 + q.m12 + q.m13 + q.m23 + q.m31 + q.m32)) return false;
+    // The fit's domain (anisotropic_minimize): the mirror above can leave det B <= 0.
+    if (!std::isfinite(q.m11 + q.m22 + q.m12 + q.m13 + q.m23 + q.m31 + q.m32) || !(glm::determinant(q.block()) > 0))
+        return false;
     p = q;
     return true;
 }
