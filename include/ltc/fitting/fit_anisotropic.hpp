@@ -63,6 +63,14 @@
 // thread count. A node whose relative L1 error exceeds 1 is refitted from a fresh start (an
 // isotropic lobe of width max(alpha_x, alpha_y) on the average direction) and the better kept.
 //
+// Thin nodes (j = 0 < i: alpha_y = alpha_min, a lobe that is almost a curve) come after all the
+// other chains, each started from node (i, 1, k, l) and fitted for the table's interpolation
+// (detail::anisotropic_fit_thin): its own objective, the objectives of the lobes a quarter and
+// three quarters of the way to (i, 1, k, l) under the matrices that the lookup interpolates
+// there, and a pull towards the linear extrapolation 2 M(i,1) - M(i,2). The
+// node's own L3 distance is nearly flat there and its minimum a sheared matrix far from the
+// neighbours, and the lobes between the two nodes, not the degenerate one, are what a shader sees.
+//
 // Degenerate cases: alpha below options::alpha_min is clamped (node 0 of each alpha axis);
 // theta_v stops at theta_max = 0.9999 pi/2 (V.z = 0 leaves rho undefined); with an odd size the
 // diagonal's middle phi node (phi = pi/4) is fitted without the swap constraint.
@@ -258,6 +266,51 @@ inline std::vector<family_polygon> anisotropic_polygon_family(const glm::dvec3& 
     return family;
 }
 
+/// One lobe's objective (options::goal) on a sample set re-centred on a given matrix (refresh).
+struct anisotropic_objective {
+    glm::dvec3 V;
+    anisotropic_alpha alpha;
+    double magnitude = 0;
+    const anisotropic_options* opt = nullptr;
+    anisotropic_sample_set samples;
+    integral_targets targets;
+    double f3 = 1;
+
+    template <template <typename> class Brdf>
+    void init(const glm::dvec3& v, const anisotropic_alpha& a, const anisotropic_moments& mom, const glm::dvec3& axis,
+              const anisotropic_options& o) {
+        V = v;
+        alpha = a;
+        magnitude = mom.magnitude;
+        opt = &o;
+        if (o.goal != objective::l3) {
+            const std::vector<family_polygon> family = anisotropic_polygon_family(axis, a);
+            std::vector<double> g;
+            family_integrals<Brdf>(V, a, family, default_brdf_samples, default_polygon_samples, g, nullptr);
+            targets = significant_targets(family, g, mom.magnitude, o.integral_floor);
+        }
+    }
+    template <template <typename> class Brdf>
+    void refresh(const glm::dmat3& M) {
+        make_anisotropic_sample_set<Brdf>(V, alpha, M, opt->error_samples, samples);
+        f3 = 1;
+        if (opt->goal == objective::combined) {
+            const full_inverse_result inv = full_inverse(M);
+            f3 = samples.all(inv.inverse, 1.0 / inv.abs_determinant, magnitude).f3;
+            if (!(f3 > 0)) f3 = 1;
+        }
+    }
+    double operator()(const glm::dmat3& m_inv, double abs_det) const {
+        if (opt->goal == objective::l3) return samples.l3(m_inv, abs_det, magnitude);
+        double e = integral_loss(targets, m_inv, magnitude);
+        if (opt->goal == objective::combined) {
+            const double l3 = std::cbrt(samples.l3(m_inv, abs_det, magnitude) / f3);
+            e += opt->l3_weight * l3 * l3;
+        }
+        return e;
+    }
+};
+
 template <template <typename> class Brdf>
 anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alpha& alpha,
                                       const anisotropic_moments& mom, int dims, anisotropic_parameters p,
@@ -308,20 +361,132 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
     return r;
 }
 
+/// A thin node (one alpha at alpha_min, the other not: the lobe almost a curve), after the file
+/// comment: the node's objective, plus that of the lobes a quarter and three quarters of the way
+/// to the neighbour node (alpha_far) under the matrices that the table interpolates there (from
+/// the canonical matrices; `neighbour` canonical, in the node's frame): the midpoint rule for the
+/// interpolated lobes' error; plus a pull, reference_weight times the squared distance of the
+/// canonical matrix to `reference` (the linear extrapolation of the two neighbours). The L3
+/// distance alone is nearly flat in the thin direction, and its minimum there a sheared matrix
+/// that the table cannot interpolate to the neighbours.
+template <template <typename> class Brdf>
+anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alpha& alpha,
+                                      const anisotropic_alpha& alpha_far, const anisotropic_moments& mom, int dims,
+                                      anisotropic_parameters p, const glm::dmat3& neighbour,
+                                      const glm::dmat3& reference, const anisotropic_options& opt) {
+    anisotropic_node r;
+    r.magnitude = mom.magnitude;
+    r.fresnel = mom.fresnel;
+    constexpr int between = 2;
+    // Strong, so that mainly the objective's flat directions follow it; a weaker pull leaves the
+    // wide axis of a thin lobe narrower than the neighbours' (tools/anisotropic_error_report).
+    const double reference_weight = 100.0;
+    const auto position = [](int b) { return (double(b) + 0.5) / double(between); };  // t in (0, 1)
+    anisotropic_objective node_objective, mid_objective[between];
+    node_objective.init<Brdf>(V, alpha, mom, p.axis, opt);
+    for (int b = 0; b < between; ++b) {
+        const double t = position(b);
+        const anisotropic_alpha a{alpha.x + t * (alpha_far.x - alpha.x), alpha.y + t * (alpha_far.y - alpha.y)};
+        mid_objective[b].init<Brdf>(V, a, compute_anisotropic_moments<Brdf>(V, a, opt.moment_samples), p.axis, opt);
+    }
+    const auto canonical = [](const glm::dmat3& m_inv) { return canonical_matrix(canonical_inverse(m_inv)); };
+    const auto between_matrix = [&](const glm::dmat3& c, int b) { return (1 - position(b)) * c + position(b) * neighbour; };
+    double step = opt.initial_step;
+    for (int round = 0; round < std::max(1, opt.rounds); ++round) {
+        node_objective.refresh<Brdf>(p.matrix());
+        const glm::dmat3 c0 = canonical(full_inverse(p.matrix()).inverse);
+        for (int b = 0; b < between; ++b) mid_objective[b].refresh<Brdf>(between_matrix(c0, b));
+        const auto objective_of = [&](const glm::dmat3& m_inv, double abs_det) {
+            const glm::dmat3 c = canonical(m_inv);
+            const glm::dmat3 d = c - reference;
+            double e = node_objective(m_inv, abs_det);
+            for (int k = 0; k < 3; ++k) e += reference_weight * glm::dot(d[k], d[k]);
+            for (int b = 0; b < between; ++b) {
+                const full_inverse_result mid = full_inverse(between_matrix(c, b));
+                if (!mid.ok) return std::numeric_limits<double>::infinity();
+                e += mid_objective[b](mid.inverse, 1.0 / mid.abs_determinant);
+            }
+            return e;
+        };
+        if (dims == 7) p = anisotropic_minimize<7>(objective_of, p, step, opt, r.evaluations);
+        else if (dims == 4) p = anisotropic_minimize<4>(objective_of, p, step, opt, r.evaluations);
+        else if (dims == 2) p = anisotropic_minimize<2>(objective_of, p, step, opt, r.evaluations);
+        else p = anisotropic_minimize<1>(objective_of, p, step, opt, r.evaluations);
+        step *= 0.25;
+    }
+    r.parameters = p;
+    const full_inverse_result inv = full_inverse(p.matrix());
+    r.m_inv = canonical_inverse(inv.inverse);
+    r.matrix = canonical_matrix(r.m_inv);
+    const auto s = node_objective.samples.all(inv.inverse, 1.0 / inv.abs_determinant, r.magnitude);
+    r.relative_l1 = s.f1 > 0 ? s.l1 / s.f1 : 0.0;
+    r.relative_l3 = s.f3 > 0 ? std::cbrt(s.l3 / s.f3) : 0.0;
+    return r;
+}
+
+/// The parameters of the LTC of M about `axis` (M's LTC, up to M -> s M Q, s > 0, Q a rotation
+/// about z or a mirror: anisotropic_parameters.hpp): B = R(axis)^T M Q / s with B[1][0] = 0,
+/// m11, m22 > 0 and B[2][2] = 1. False (p unchanged) where no such B exists.
+inline bool parameters_from_matrix(const glm::dmat3& M, const glm::dvec3& axis, anisotropic_parameters& p) {
+    const glm::dmat3 B = glm::transpose(rotation_to(axis)) * M;  // B[column][row]
+    const double b10 = B[0][1], b11 = B[1][1];
+    const double r = std::sqrt(b10 * b10 + b11 * b11);
+    if (!(r > 0) || !std::isfinite(r)) return false;
+    const double c = b11 / r, s = -b10 / r;  // Q e_x = (c, s, 0), Q e_y = (-s, c, 0)
+    glm::dvec3 c0 = c * B[0] + s * B[1];
+    const glm::dvec3 c1 = -s * B[0] + c * B[1];
+    const glm::dvec3 c2 = B[2];
+    if (c0.x < 0) c0 = -c0;  // the mirror x -> -x
+    if (!(c2.z > 0) || !(c0.x > 0) || !(c1.y > 0)) return false;
+    const double k = 1.0 / c2.z;
+    anisotropic_parameters q;
+    q.axis = axis;
+    q.m11 = c0.x * k;
+    q.m31 = c0.z * k;
+    q.m12 = c1.x * k;
+    q.m22 = c1.y * k;
+    q.m32 = c1.z * k;
+    q.m13 = c2.x * k;
+    q.m23 = c2.y * k;
+    // The fit's domain (anisotropic_minimize): the mirror above can leave det B <= 0.
+    if (!std::isfinite(q.m11 + q.m22 + q.m12 + q.m13 + q.m23 + q.m31 + q.m32) || !(glm::determinant(q.block()) > 0))
+        return false;
+    p = q;
+    return true;
+}
+
 }  // namespace detail
+
+/// A thin node's neighbour (detail::anisotropic_fit_thin): the roughness halfway to it and its
+/// canonical matrix in the node's frame.
+struct anisotropic_thin {
+    anisotropic_alpha alpha_far;
+    glm::dmat3 neighbour{1.0};
+    glm::dmat3 reference{1.0};
+};
 
 /// Fits one node: view V (unit, V.z > 0), roughness alpha, the parameters that `symmetry` frees,
 /// starting from `start` (its axis replaced by the BRDF's average direction; with mirror_y, V.y
-/// must be 0 and the axis's y is zeroed; with normal, V = +z and the axis is +z). See the file
-/// comment for the safeguard.
+/// must be 0 and the axis's y is zeroed; with normal, V = +z and the axis is +z), or from the LTC
+/// of `start_matrix` where given (detail::parameters_from_matrix about that axis). With `thin`,
+/// the thin node's fit (detail::anisotropic_fit_thin, no safeguard: its pull keeps it near the
+/// neighbours). See the file comment for the safeguard.
 template <template <typename> class Brdf>
 anisotropic_node fit_anisotropic_node(const glm::dvec3& V, const anisotropic_alpha& alpha, node_symmetry symmetry,
-                                      const anisotropic_parameters& start, const anisotropic_options& opt) {
+                                      const anisotropic_parameters& start, const anisotropic_options& opt,
+                                      const glm::dmat3* start_matrix = nullptr,
+                                      const anisotropic_thin* thin = nullptr) {
     const anisotropic_moments mom = compute_anisotropic_moments<Brdf>(V, alpha, opt.moment_samples);
     const bool equal = alpha.x == alpha.y;
     const int dims = detail::anisotropic_dims(symmetry, equal);
     anisotropic_parameters p = start;
     p.axis = mom.average_direction;
+    if (start_matrix) {
+        glm::dvec3 axis = p.axis;
+        if (symmetry == node_symmetry::mirror_y) axis = normalize_or_zero(glm::dvec3(axis.x, 0, axis.z));
+        if (axis.z > 0) detail::parameters_from_matrix(*start_matrix, axis, p);
+        p.axis = mom.average_direction;
+    }
     if (symmetry == node_symmetry::mirror_y) {
         p.axis.y = 0;
         p.axis = normalize_or_zero(p.axis);
@@ -332,6 +497,7 @@ anisotropic_node fit_anisotropic_node(const glm::dvec3& V, const anisotropic_alp
         if (equal) p.m22 = p.m11;
     }
     if (!(p.axis.z > 0)) p.axis = glm::dvec3(0, 0, 1);
+    if (thin) return detail::anisotropic_fit_thin<Brdf>(V, alpha, thin->alpha_far, mom, dims, p, thin->neighbour, thin->reference, opt);
     anisotropic_node r = detail::anisotropic_fit_from<Brdf>(V, alpha, mom, dims, p, opt);
     if (!(r.relative_l1 <= 1.0)) {
         anisotropic_parameters fresh;
@@ -429,11 +595,12 @@ anisotropic_table_fit fit_anisotropic_table(const anisotropic_options& opt, cons
     struct chain {
         int i, j, l;
     };
-    std::vector<chain> chains;
+    std::vector<chain> chains, thin_chains;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j <= i; ++j)
-            for (int l = 0; l < (i == j ? (n + 1) / 2 : n); ++l) chains.push_back(chain{i, j, l});
-    const std::size_t total = chains.size() * std::size_t(n - 1);
+            for (int l = 0; l < (i == j ? (n + 1) / 2 : n); ++l)
+                (j == 0 && i > 0 && n > 2 ? thin_chains : chains).push_back(chain{i, j, l});
+    const std::size_t total = (chains.size() + thin_chains.size()) * std::size_t(n - 1);
 
     std::atomic<std::size_t> done{0};
     std::atomic<std::size_t> next{0};
@@ -442,18 +609,19 @@ anisotropic_table_fit fit_anisotropic_table(const anisotropic_options& opt, cons
     const auto fail = [&] {
         std::lock_guard<std::mutex> lock(mutex);
         if (!failure) failure = std::current_exception();
-        next.store(chains.size());
+        next.store(chains.size() + thin_chains.size());
     };
     const auto failed = [&] {
         std::lock_guard<std::mutex> lock(mutex);
         return failure != nullptr;
     };
+    const std::vector<chain>* work = &chains;
     const auto worker = [&](unsigned) {
         try {
             for (;;) {
                 const std::size_t c = next.fetch_add(1);
-                if (c >= chains.size()) break;
-                const chain ch = chains[c];
+                if (c >= work->size()) break;
+                const chain ch = (*work)[c];
                 const anisotropic_node& nn = normal[anisotropic_layout::pair_index(ch.i, ch.j)];
                 tab.at(ch.i, ch.j, 0, ch.l) = nn;
                 // phi = pi/2 (off the diagonal): the phi = 0 chain of the swapped BRDF.
@@ -463,7 +631,21 @@ anisotropic_table_fit fit_anisotropic_table(const anisotropic_options& opt, cons
                 anisotropic_parameters p = swap ? detail::swap_start(nn.parameters) : nn.parameters;
                 for (int k = 1; k < n; ++k) {
                     const glm::dvec3 V = anisotropic_node_view(k, swap ? 0 : ch.l, n);
-                    anisotropic_node r = fit_anisotropic_node<Brdf>(V, a, sym, p, opt);
+                    anisotropic_node r;
+                    if (ch.j == 0 && ch.i > 0 && n > 2) {
+                        // A thin lobe: continuation in alpha_y from the fitted node (i, 1, k, l).
+                        const anisotropic_node& ref = tab.at(ch.i, 1, k, ch.l);
+                        anisotropic_thin thin;
+                        thin.neighbour = swap ? ltc::detail::swap_xy(ref.matrix) : ref.matrix;
+                        const glm::dmat3 far = ch.i >= 2 ? tab.at(ch.i, 2, k, ch.l).matrix
+                                                         : ltc::detail::swap_xy(tab.at(2, ch.i, k, n - 1 - ch.l).matrix);
+                        thin.reference = 2.0 * thin.neighbour - (swap ? ltc::detail::swap_xy(far) : far);
+                        const double t = anisotropic_node_alpha(1, n, opt.alpha_min);
+                        thin.alpha_far = swap ? anisotropic_alpha{t, a.y} : anisotropic_alpha{a.x, t};
+                        r = fit_anisotropic_node<Brdf>(V, a, sym, p, opt, &thin.neighbour, &thin);
+                    } else {
+                        r = fit_anisotropic_node<Brdf>(V, a, sym, p, opt);
+                    }
                     p = r.parameters;
                     tab.at(ch.i, ch.j, k, ch.l) = swap ? detail::swapped(r) : r;
                     done.fetch_add(1);
@@ -483,6 +665,13 @@ anisotropic_table_fit fit_anisotropic_table(const anisotropic_options& opt, cons
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < n; ++k)
             for (int l = (n + 1) / 2; l < n; ++l) tab.at(i, i, k, l) = detail::swapped(tab.at(i, i, k, n - 1 - l));
+
+    if (!thin_chains.empty()) {
+        work = &thin_chains;
+        next.store(0);
+        detail::run_fit_threads(threads, int(thin_chains.size()), worker, progress, done, total, fail, failed);
+        if (failure) std::rethrow_exception(failure);
+    }
     return tab;
 }
 
