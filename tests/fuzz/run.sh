@@ -17,7 +17,9 @@
 # samplers"), LTC_FUZZ_WORK (the scratch folder, kept; default a new one under /dev/shm, else
 # $TMPDIR or /tmp, removed after a clean run), LTC_FUZZ_PARALLEL (harnesses built and run at
 # once, each on its own core, 1; each keeps its seconds, so N of them take about 1/N of the
-# time). See tests/fuzz/README.md.
+# time), LTC_FUZZ_STAGE (all; build: only build the harnesses into LTC_FUZZ_BIN, run: only fuzz
+# the ones built there, so that a caller can compile them while the cores are otherwise idle).
+# See tests/fuzz/README.md.
 set -euo pipefail
 
 declare -A share=([core]=18 [shading]=34 [textured]=36 [shapes]=14 [samplers]=18)
@@ -43,6 +45,18 @@ if [[ ! "$parallel" =~ ^[1-9][0-9]*$ ]]; then
   echo "fuzz: LTC_FUZZ_PARALLEL='$parallel': give a number of harnesses at once (1, 2, ...)" >&2
   exit 2
 fi
+stage=${LTC_FUZZ_STAGE:-all}
+case "$stage" in
+  all) ;;
+  build | run)
+    if [[ -z "${LTC_FUZZ_BIN:-}" ]]; then
+      echo "fuzz: LTC_FUZZ_STAGE=$stage needs LTC_FUZZ_BIN, the folder of the harness binaries" >&2
+      exit 2
+    fi
+    mkdir -p "$LTC_FUZZ_BIN"
+    bin=$(cd "$LTC_FUZZ_BIN" && pwd) ;;
+  *) echo "fuzz: LTC_FUZZ_STAGE='$stage': give all, build or run" >&2; exit 2 ;;
+esac
 if [[ -n "${LTC_FUZZ_BUILD_JOBS:-}" ]]; then
   echo "fuzz: LTC_FUZZ_BUILD_JOBS is gone; LTC_FUZZ_PARALLEL=N builds and runs N harnesses at once" >&2
 fi
@@ -58,6 +72,7 @@ else
   work=$(mktemp -d "$scratch/ltc-fuzz.XXXXXX") keep=0
 fi
 work=$(cd "$work" && pwd)
+if [[ "$stage" == all ]]; then bin=$work; fi
 # -g1: line tables, all the sanitizers' stack traces use (file:line, inlined frames), at less
 # compile time than -g.
 flags=(-std=c++17 -g1 -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -I "$root/include")
@@ -66,15 +81,29 @@ for h in "${harnesses[@]}"; do
   [[ -f "$root/tests/fuzz/fuzz_$h.cpp" ]] || { echo "fuzz: no harness $root/tests/fuzz/fuzz_$h.cpp" >&2; exit 2; }
 done
 
-# One harness: build, then run for its seconds; writes status_<area> (build, fail or ok) and
-# line_<area> (its summary line).
-fuzz_one() {
-  local h=$1 corpus="$work/corpus_$h" artifacts="$work/artifacts_$h" rundir="$work/run_$h"
-  local log="$work/log_$h.txt" rc=0
-  if ! "$cxx" "${flags[@]}" "$root/tests/fuzz/fuzz_$h.cpp" -o "$work/fuzz_$h" >"$work/build_$h.log" 2>&1; then
+# One harness's build into $bin; writes status_<area> (build on failure).
+build_one() {
+  local h=$1
+  if ! "$cxx" "${flags[@]}" "$root/tests/fuzz/fuzz_$h.cpp" -o "$bin/fuzz_$h" >"$work/build_$h.log" 2>&1; then
     echo "fuzz: build of $h failed:" >&2
     cat "$work/build_$h.log" >&2
     echo build >"$work/status_$h"
+    return 1
+  fi
+}
+
+# One harness: build (unless built by LTC_FUZZ_STAGE=build), then run for its seconds; writes
+# status_<area> (build, fail or ok) and line_<area> (its summary line).
+fuzz_one() {
+  local h=$1 corpus="$work/corpus_$h" artifacts="$work/artifacts_$h" rundir="$work/run_$h"
+  local log="$work/log_$h.txt" rc=0
+  if [[ "$stage" == run ]]; then
+    if [[ ! -x "$bin/fuzz_$h" ]]; then
+      echo "fuzz: no $bin/fuzz_$h (build it with LTC_FUZZ_STAGE=build)" >&2
+      echo build >"$work/status_$h"
+      return
+    fi
+  elif ! build_one "$h"; then
     return
   fi
   mkdir -p "$corpus" "$artifacts" "$rundir"
@@ -85,7 +114,7 @@ fuzz_one() {
   # current directory.
   TIMEFORMAT='%U %S'
   local seconds=${share[$h]:-24}
-  { time (cd "$rundir" && "$work/fuzz_$h" -max_total_time="$seconds" -max_len=512 -print_final_stats=1 \
+  { time (cd "$rundir" && "$bin/fuzz_$h" -max_total_time="$seconds" -max_len=512 -print_final_stats=1 \
             -artifact_prefix="$artifacts/" "${fuzz_args[@]}" "$corpus" >"$log" 2>&1); } 2>"$work/cpu_$h.txt" || rc=$?
   local cpu
   cpu=$(awk '{ printf "%.0f", $1 + $2 }' "$work/cpu_$h.txt" 2>/dev/null || echo 0)
@@ -122,10 +151,27 @@ fuzz_args=("$@")
 # LTC_FUZZ_PARALLEL=2 fuzz_shading's long compile starts at once and the short ones fill the
 # other core.
 declare -A build_cost=([core]=10 [shading]=52 [textured]=12 [shapes]=11 [samplers]=6)
+# Built already (LTC_FUZZ_STAGE=run): by the share alone.
+if [[ "$stage" == run ]]; then for h in "${!build_cost[@]}"; do build_cost[$h]=0; done; fi
 order=($(for h in "${harnesses[@]}"; do echo "$(( ${build_cost[$h]:-20} + ${share[$h]:-24} )) $h"; done |
          sort -rn -k1,1 | awk '{ print $2 }'))
 
-echo "fuzz: building and running ${order[*]}, $parallel at once, in $work"
+if [[ "$stage" == build ]]; then
+  echo "fuzz: building ${order[*]}, $parallel at once, into $bin"
+  running=0 build_failed=0
+  for h in "${order[@]}"; do
+    if (( running >= parallel )); then wait -n || build_failed=1; running=$(( running - 1 )); fi
+    build_one "$h" &
+    running=$(( running + 1 ))
+  done
+  while (( running > 0 )); do wait -n || build_failed=1; running=$(( running - 1 )); done
+  if (( build_failed )); then echo "fuzz: a build failed (logs in $work)" >&2; exit 2; fi
+  echo "fuzz: built ${order[*]} into $bin"
+  if (( ! keep )); then rm -rf "$work"; fi
+  exit 0
+fi
+
+echo "fuzz: $([[ "$stage" == run ]] && echo "running the harnesses of $bin:" || echo "building and running") ${order[*]}, $parallel at once, in $work"
 running=0
 for h in "${order[@]}"; do
   if (( running >= parallel )); then wait -n || true; running=$(( running - 1 )); fi
