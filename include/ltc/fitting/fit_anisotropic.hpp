@@ -229,6 +229,16 @@ anisotropic_parameters anisotropic_minimize(const Objective& objective_of, const
     return anisotropic_from_vector(r.x.data(), dims, start.axis);
 }
 
+/// anisotropic_minimize over the node's free parameters (dims: 7, 4, 2 or 1, its symmetry's).
+template <typename Objective>
+anisotropic_parameters anisotropic_minimize(int dims, const Objective& objective_of, const anisotropic_parameters& start,
+                                            double step, const anisotropic_options& opt, int& evaluations) {
+    if (dims == 7) return anisotropic_minimize<7>(objective_of, start, step, opt, evaluations);
+    if (dims == 4) return anisotropic_minimize<4>(objective_of, start, step, opt, evaluations);
+    if (dims == 2) return anisotropic_minimize<2>(objective_of, start, step, opt, evaluations);
+    return anisotropic_minimize<1>(objective_of, start, step, opt, evaluations);
+}
+
 /// The integral objective's polygons for a lobe of average direction `axis` (unit, 3D) and
 /// roughness alpha: integral_objective.hpp's families without the y symmetry.
 ///   lobe       radii r_j = r0 (1.2 / r0)^(j / 4), j = 0..4, r0 = clamp(0.35 (alpha_x + alpha_y),
@@ -345,10 +355,7 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
             }
             return e;
         };
-        if (dims == 7) p = anisotropic_minimize<7>(objective_of, p, step, opt, r.evaluations);
-        else if (dims == 4) p = anisotropic_minimize<4>(objective_of, p, step, opt, r.evaluations);
-        else if (dims == 2) p = anisotropic_minimize<2>(objective_of, p, step, opt, r.evaluations);
-        else p = anisotropic_minimize<1>(objective_of, p, step, opt, r.evaluations);
+        p = anisotropic_minimize(dims, objective_of, p, step, opt, r.evaluations);
         step *= 0.25;
     }
     r.parameters = p;
@@ -408,10 +415,7 @@ anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alp
             }
             return e;
         };
-        if (dims == 7) p = anisotropic_minimize<7>(objective_of, p, step, opt, r.evaluations);
-        else if (dims == 4) p = anisotropic_minimize<4>(objective_of, p, step, opt, r.evaluations);
-        else if (dims == 2) p = anisotropic_minimize<2>(objective_of, p, step, opt, r.evaluations);
-        else p = anisotropic_minimize<1>(objective_of, p, step, opt, r.evaluations);
+        p = anisotropic_minimize(dims, objective_of, p, step, opt, r.evaluations);
         step *= 0.25;
     }
     r.parameters = p;
