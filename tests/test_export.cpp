@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -102,6 +103,49 @@ bool within_half_rounding(float h, float v) {
 bytes read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// The numbers between `open` (e.g. "const LTC_MAT_1 = new Float32Array( [") and the next "]", as
+/// a reader of the text parses them: each decimal to the nearest double (JavaScript's numbers,
+/// strtod), then, for a float array, to the nearest float.
+std::vector<double> numbers_after(const std::string& text, const std::string& open) {
+    std::vector<double> out;
+    const std::size_t at = text.find(open);
+    REQUIRE(at != std::string::npos);
+    const std::size_t end = text.find(']', at + open.size());
+    REQUIRE(end != std::string::npos);
+    const std::string body = text.substr(at + open.size(), end - at - open.size());
+    const char* p = body.c_str();
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\n' || *p == ',') ++p;
+        if (*p == 0) break;
+        char* next = nullptr;
+        out.push_back(std::strtod(p, &next));
+        REQUIRE(next != p);
+        p = next;
+    }
+    return out;
+}
+
+/// A GLSL/HLSL constant array's texels: the four numbers of each "vec4(" (or "float4(") after `open`.
+std::vector<float> shader_texels(const std::string& text, const std::string& open, const std::string& vec) {
+    std::vector<float> out;
+    std::size_t at = text.find(open);
+    REQUIRE(at != std::string::npos);
+    at += open.size();
+    const std::size_t end = text.find(';', at);
+    for (std::size_t k = text.find(vec + "(", at); k < end; k = text.find(vec + "(", k)) {
+        const char* p = text.c_str() + k + vec.size() + 1;
+        for (int c = 0; c < 4; ++c) {
+            char* next = nullptr;
+            out.push_back(std::strtof(p, &next));
+            REQUIRE(next != p);
+            p = next;
+            while (*p == ',' || *p == ' ') ++p;
+        }
+        k = std::size_t(p - text.c_str());
+    }
+    return out;
 }
 
 }  // namespace
@@ -332,6 +376,81 @@ TEST_CASE("the paper's table through write_dds gives the reference code's DDS fi
     WARN(differ << " of " << compared << " reference texel channels differ in the last bit of the half");
     CHECK(far == 0);
     CHECK(differ * 100 <= compared);  // at most one in a hundred
+}
+
+TEST_CASE("threejs_module: three.js's RectAreaLightTexturesLib layout, sampled as its shader does, is the table at every node",
+          "[export]") {
+    const ltc::ltc_table& table = ltc::ggx::table;
+    const ltc::paper_textures p = ltc::to_paper_textures(table);
+    const std::string js = ltc::threejs_module(p, "ggx");
+    const int n = table.width(), m = table.height();  // u nodes (texture y), roughness nodes (texture x)
+    const std::vector<double> mat_1 = numbers_after(js, "const LTC_MAT_1 = new Float32Array( [");
+    const std::vector<double> mat_2 = numbers_after(js, "const LTC_MAT_2 = new Float32Array( [");
+    const std::vector<double> half_1 = numbers_after(js, "const LTC_HALF_MAT_1 = new Uint16Array( [");
+    const std::vector<double> half_2 = numbers_after(js, "const LTC_HALF_MAT_2 = new Uint16Array( [");
+    const std::size_t texels = std::size_t(n) * std::size_t(m);
+    for (const auto* a : {&mat_1, &mat_2, &half_1, &half_2}) REQUIRE(a->size() == texels * 4);
+    CHECK(js.find("new DataTexture( data, " + std::to_string(m) + ", " + std::to_string(n) +
+                  ", RGBAFormat, type, UVMapping, ClampToEdgeWrapping, ClampToEdgeWrapping, LinearFilter, NearestFilter, 1 )") !=
+          std::string::npos);
+    CHECK(js.find("export { RectAreaLightTexturesLib };") != std::string::npos);
+    for (const char* texture : {"LTC_FLOAT_1", "LTC_FLOAT_2", "LTC_HALF_1", "LTC_HALF_2"})
+        CHECK(js.find(std::string("this.") + texture + " = ltcTexture(") != std::string::npos);
+    int mismatches = 0, half_mismatches = 0, off_node = 0;
+    for (int t = 0; t < n; ++t) {
+        for (int a = 0; a < m; ++a) {
+            // three.js's LTC_Uv: uv = (roughness, sqrt(1 - dotNV)) * LUT_SCALE + LUT_BIAS, which
+            // lands on the centre of texel (a, t); nearest texel = the bilinear lookup there.
+            const double roughness = double(a) / (m - 1), u = double(t) / (n - 1);
+            const double uv_x = roughness * (m - 1) / m + 0.5 / m, uv_y = u * (n - 1) / n + 0.5 / n;
+            const double x = uv_x * m - 0.5, y = uv_y * n - 0.5;
+            off_node += std::abs(x - a) > 1e-9 || std::abs(y - t) > 1e-9;
+            const std::size_t i = (std::size_t(t) * std::size_t(m) + std::size_t(a)) * 4;
+            const auto f = [&](const std::vector<double>& v, std::size_t c) { return float(v[i + c]); };
+            // mInv = mat3( vec3( t1.x, 0, t1.y ), vec3( 0, 1, 0 ), vec3( t1.z, 0, t1.w ) ) (columns)
+            const glm::mat3 m_inv(glm::vec3(f(mat_1, 0), 0, f(mat_1, 1)), glm::vec3(0, 1, 0),
+                                  glm::vec3(f(mat_1, 2), 0, f(mat_1, 3)));
+            const ltc::ltc_coefficients<double> c = ltc::ggx::fetch(1 - u * u, roughness);
+            for (int col = 0; col < 3; ++col)
+                for (int row = 0; row < 3; ++row) mismatches += double(m_inv[col][row]) != c.m_inv[col][row];
+            // fresnel = specularColor * t2.x + ( specularF90 - specularColor ) * t2.y
+            mismatches += double(f(mat_2, 0)) != c.magnitude;
+            mismatches += double(f(mat_2, 1)) != c.fresnel;
+            mismatches += f(mat_2, 2) != 0.0f || f(mat_2, 3) != 0.0f;
+            // The half textures: each value the float's half, rounded to nearest even.
+            for (std::size_t k = 0; k < 4; ++k) {
+                half_mismatches += half_1[i + k] != double(ltc::float_to_half(f(mat_1, k)));
+                half_mismatches += half_2[i + k] != double(ltc::float_to_half(f(mat_2, k)));
+                half_mismatches += !within_half_rounding(ltc::half_to_float(std::uint16_t(half_1[i + k])), f(mat_1, k));
+            }
+        }
+    }
+    CHECK(off_node == 0);
+    CHECK(mismatches == 0);
+    CHECK(half_mismatches == 0);
+}
+
+TEST_CASE("shader_constants: the GLSL and HLSL arrays hold every texel, reading back to the same floats", "[export]") {
+    const ltc::paper_textures p =
+        ltc::to_paper_textures(ltc::two_lobe_layout_table(ltc::tables::ggx_two_lobe_data, ltc::tables::ggx_two_lobe_size, 1));
+    for (const auto language : {ltc::shading_language::glsl, ltc::shading_language::hlsl}) {
+        const bool glsl = language == ltc::shading_language::glsl;
+        const std::string vec = glsl ? "vec4" : "float4";
+        const std::string text = ltc::shader_constants(p, "lobe", language, "a note");
+        const std::string count = std::to_string(p.ltc_1.texels.size() / 4);
+        CHECK(text.find("#define LOBE_WIDTH " + std::to_string(p.ltc_1.width) + "\n") != std::string::npos);
+        CHECK(text.find("#define LOBE_HEIGHT " + std::to_string(p.ltc_1.height) + "\n") != std::string::npos);
+        CHECK(text.find("// a note\n") != std::string::npos);
+        for (const ltc::rgba_texture* t : {&p.ltc_1, &p.ltc_2}) {
+            const std::string open = std::string(glsl ? "const " : "static const ") + vec + " lobe" +
+                                     (t == &p.ltc_1 ? "_ltc_1" : "_ltc_2") + "[" + count + "] = ";
+            const std::vector<float> texels = shader_texels(text, open, vec);
+            REQUIRE(texels.size() == t->texels.size());
+            int mismatches = 0;
+            for (std::size_t k = 0; k < texels.size(); ++k) mismatches += bits_of(texels[k]) != bits_of(t->texels[k]);
+            CHECK(mismatches == 0);
+        }
+    }
 }
 
 }  // namespace ltc_test_export

@@ -15,7 +15,6 @@
 #include <ltc/tables/ltc_table.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -45,14 +44,16 @@ const char* const usage_text =
     "  --formats L    comma-separated, default all of: dds32 (<name>_ltc_1.dds, DXGI R32G32B32A32_FLOAT),\n"
     "                 dds16 (<name>_ltc_1_f16.dds, R16G16B16A16_FLOAT; left out where a value overflows\n"
     "                 half), raw (<name>_ltc_1.f32 and its <name>_ltc_1.json), glsl (<name>.glsl),\n"
-    "                 hlsl (<name>.hlsl): the textures as constant arrays, texel (x, y) at [y * w + x]\n"
+    "                 hlsl (<name>.hlsl): the textures as constant arrays, texel (x, y) at [y * w + x];\n"
+    "                 threejs (<name>_threejs.js): an ES module shaped as three.js's RectAreaLightTexturesLib\n"
+    "                 (float and half textures; left out where a value overflows half)\n"
     "  --out DIR      the output directory (created; default .)\n"
     "  --quiet        no report; also -q\n"
     "  --help         this text; also -h\n";
 
 struct arguments {
     std::string table = "ggx";
-    std::vector<std::string> formats{"dds32", "dds16", "raw", "glsl", "hlsl"};
+    std::vector<std::string> formats{"dds32", "dds16", "raw", "glsl", "hlsl", "threejs"};
     std::string out = ".";
     bool quiet = false;
 };
@@ -86,7 +87,8 @@ arguments parse(int argc, char** argv) {
         } else if (name == "--formats") {
             a.formats = split(v.text);
             for (const std::string& f : a.formats)
-                if (f != "dds32" && f != "dds16" && f != "raw" && f != "glsl" && f != "hlsl") return option_status::bad;
+                if (f != "dds32" && f != "dds16" && f != "raw" && f != "glsl" && f != "hlsl" && f != "threejs")
+                    return option_status::bad;
         } else if (name == "--out") {
             a.out = v.text;
             if (a.out.empty()) return option_status::bad;
@@ -111,44 +113,6 @@ void write_bytes(const std::filesystem::path& path, const void* data, std::size_
         std::exit(1);
     }
     if (!quiet) std::cout << "  " << path.string() << " (" << size << " bytes)\n";
-}
-
-/// A float literal both GLSL and HLSL read back to the same float (9 significant digits).
-std::string literal(float v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
-    std::string s = buf;
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return s;
-}
-
-/// The two textures as constant arrays of a shading language: GLSL (const vec4 name[N] =
-/// vec4[N](...)) or HLSL (static const float4 name[N] = {...}).
-std::string shader_include(const ltc::paper_textures& p, const std::string& name, const std::string& note, bool glsl) {
-    const char* vec = glsl ? "vec4" : "float4";
-    std::string s = "// " + name + ": the paper's LTC textures as constant arrays (written by ltc_export).\n";
-    s += "// Texel (x, y) at [y * " + std::to_string(p.ltc_1.width) + " + x]; x = roughness node (roughness = x / " +
-         std::to_string(p.ltc_1.width - 1) + "), y = u node (sqrt(1 - cos theta_v) = y / " +
-         std::to_string(p.ltc_1.height - 1) + ").\n";
-    s += "// ltc_1 = (m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2]), column-major, m_inv[1][1] = 1;\n";
-    s += "// ltc_2 = (magnitude, fresnel, 0, 0). Interpolate between the four nearest texels as a texture would.\n";
-    if (!note.empty()) s += "// " + note + "\n";
-    std::string upper = name;
-    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    s += "#define " + upper + "_WIDTH " + std::to_string(p.ltc_1.width) + "\n";
-    s += "#define " + upper + "_HEIGHT " + std::to_string(p.ltc_1.height) + "\n";
-    const std::size_t count = p.ltc_1.texels.size() / 4;
-    for (const auto& [tex, suffix] : {std::pair{&p.ltc_1, "_ltc_1"}, std::pair{&p.ltc_2, "_ltc_2"}}) {
-        s += std::string(glsl ? "const " : "static const ") + vec + " " + name + suffix + "[" + std::to_string(count) +
-             "] = " + (glsl ? std::string(vec) + "[" + std::to_string(count) + "](\n" : "{\n");
-        for (std::size_t i = 0; i < count; ++i) {
-            s += std::string("    ") + vec + "(";
-            for (int c = 0; c < 4; ++c) s += (c ? ", " : "") + literal(tex->texels[4 * i + std::size_t(c)]);
-            s += i + 1 < count ? "),\n" : ")\n";
-        }
-        s += glsl ? ");\n" : "};\n";
-    }
-    return s;
 }
 
 /// The largest float16 rounding of a texture's values: relative in half's normal range, absolute
@@ -197,8 +161,18 @@ void export_table(const arguments& a, const ltc::ltc_table& table, const std::st
     }
     for (const bool glsl : {true, false}) {
         if (!wants(a, glsl ? "glsl" : "hlsl")) continue;
-        const std::string s = shader_include(p, name, note, glsl);
+        const std::string s =
+            ltc::shader_constants(p, name, glsl ? ltc::shading_language::glsl : ltc::shading_language::hlsl, note);
         write_bytes(dir / (name + (glsl ? ".glsl" : ".hlsl")), s.data(), s.size(), a.quiet);
+    }
+    if (wants(a, "threejs")) {
+        if (ltc::half_overflows(p.ltc_1) + ltc::half_overflows(p.ltc_2) > 0) {
+            std::cerr << "ltc_export: " << name << "_threejs.js left out: its half-float textures would hold "
+                      << "values beyond float16's range (65504)\n";
+        } else {
+            const std::string s = ltc::threejs_module(p, name, note);
+            write_bytes(dir / (name + "_threejs.js"), s.data(), s.size(), a.quiet);
+        }
     }
 }
 

@@ -1,5 +1,6 @@
 // ltc/tables/export.hpp -- a table (ltc/tables/ltc_table.hpp) in the formats GPU engines load: the
-// paper's two RGBA textures, IEEE half floats, DDS files, raw floats with a JSON descriptor.
+// paper's two RGBA textures, IEEE half floats, DDS files, raw floats with a JSON descriptor,
+// GLSL/HLSL constant arrays and a three.js module.
 //
 //   const ltc::paper_textures tex = ltc::to_paper_textures(ltc::ggx::table);
 //   std::vector<unsigned char> dds = ltc::write_dds(tex.ltc_1, ltc::dds_format::rgba16_float);
@@ -259,6 +260,128 @@ inline std::string raw_descriptor_json(const rgba_texture& t, const std::string&
     j += "  \"lut_bias\": [" + num(w > 0 ? 0.5 / w : 0) + ", " + num(h > 0 ? 0.5 / h : 0) + "]\n";
     j += "}\n";
     return j;
+}
+
+namespace detail {
+
+/// A float as a decimal literal that reads back to the same float: 9 significant digits, the
+/// closest such decimal, so that a reader that rounds it to double first (JavaScript, then
+/// Float32Array) lands on the same float too; with ".0" where it would look like an integer.
+inline std::string float_literal(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+    std::string s = buf;
+    if (s.find_first_of(".en") == std::string::npos) s += ".0";
+    return s;
+}
+
+inline std::string texture_comment(const paper_textures& p, const std::string& prefix) {
+    const std::string w = std::to_string(p.ltc_1.width), h = std::to_string(p.ltc_1.height);
+    std::string s = prefix + "Texel (x, y) at [y * " + w + " + x]; x = roughness node (roughness = x / " +
+                    std::to_string(p.ltc_1.width - 1) + "), y = u node (sqrt(1 - cos theta_v) = y / " +
+                    std::to_string(p.ltc_1.height - 1) + ").\n";
+    s += prefix + "ltc_1 = (m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2]), column-major, m_inv[1][1] = 1;\n";
+    s += prefix + "ltc_2 = (magnitude, fresnel, 0, 0).\n";
+    return s;
+}
+
+}  // namespace detail
+
+enum class shading_language { glsl, hlsl };
+
+/// Both textures as constant arrays of a shading language, texel (x, y) at [y * width + x]:
+///   GLSL: const vec4 <name>_ltc_1[N] = vec4[N](...);   HLSL: static const float4 <name>_ltc_1[N] = {...};
+/// with <NAME>_WIDTH and <NAME>_HEIGHT defined; `note` (if any) becomes one more comment line.
+/// The shader interpolates the four nearest texels itself, as a texture unit would.
+inline std::string shader_constants(const paper_textures& p, const std::string& name, shading_language language,
+                                    const std::string& note = "") {
+    const bool glsl = language == shading_language::glsl;
+    const char* vec = glsl ? "vec4" : "float4";
+    std::string s = "// " + name + ": the paper's LTC textures as constant arrays (written by ltc_export).\n";
+    s += detail::texture_comment(p, "// ");
+    s += "// Interpolate between the four nearest texels as a texture would.\n";
+    if (!note.empty()) s += "// " + note + "\n";
+    std::string upper = name;
+    for (char& c : upper) c = (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+    s += "#define " + upper + "_WIDTH " + std::to_string(p.ltc_1.width) + "\n";
+    s += "#define " + upper + "_HEIGHT " + std::to_string(p.ltc_1.height) + "\n";
+    const std::size_t count = p.ltc_1.texels.size() / 4;
+    const std::string n = std::to_string(count);
+    for (const rgba_texture* t : {&p.ltc_1, &p.ltc_2}) {
+        s += std::string(glsl ? "const " : "static const ") + vec + " " + name + (t == &p.ltc_1 ? "_ltc_1" : "_ltc_2") +
+             "[" + n + "] = " + (glsl ? std::string(vec) + "[" + n + "](\n" : "{\n");
+        for (std::size_t i = 0; i < count; ++i) {
+            s += std::string("    ") + vec + "(";
+            for (std::size_t c = 0; c < 4; ++c) s += (c ? ", " : "") + detail::float_literal(t->texels[4 * i + c]);
+            s += i + 1 < count ? "),\n" : ")\n";
+        }
+        s += glsl ? ");\n" : "};\n";
+    }
+    return s;
+}
+
+/// An ES module in the shape of three.js's RectAreaLightTexturesLib (the object its
+/// RectAreaLightUniformsLib and RectAreaLightNode read): `RectAreaLightTexturesLib.init()` builds
+/// and returns `{ LTC_FLOAT_1, LTC_FLOAT_2, LTC_HALF_1, LTC_HALF_2 }`, DataTextures of
+/// width x height RGBA texels (FloatType, and HalfFloatType from halves rounded here by
+/// float_to_half), linear magnification, nearest minification, clamped. three.js samples them as
+/// the paper's shaders do: uv = (roughness, sqrt(1 - N.V)) * LUT_SCALE + LUT_BIAS,
+/// mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)), specular colour
+/// F0 * t2.x + (F90 - F0) * t2.y. The texels are those of to_paper_textures: the float arrays as
+/// decimal literals that read back to the same floats, the half arrays as their bit patterns.
+/// Precondition: no value beyond float16's range (half_overflows is 0 for both textures).
+inline std::string threejs_module(const paper_textures& p, const std::string& name, const std::string& note = "") {
+    std::string s = "// " + name + ": LTC textures in the layout of three.js's RectAreaLightTexturesLib (written by ltc_export).\n";
+    s += detail::texture_comment(p, "// ");
+    s += "// Use: import this module in place of three/addons/lights/RectAreaLightTexturesLib.js (an alias in\n";
+    s += "// the bundler or the import map), or after RectAreaLightUniformsLib.init() assign\n";
+    s += "// UniformsLib.LTC_FLOAT_1 = RectAreaLightTexturesLib.init().LTC_FLOAT_1, and so on for the other three.\n";
+    if (!note.empty()) s += "// " + note + "\n";
+    s += "import { ClampToEdgeWrapping, DataTexture, FloatType, HalfFloatType, LinearFilter, NearestFilter, "
+         "RGBAFormat, UVMapping } from 'three';\n\n";
+    const auto floats = [&](const char* var, const rgba_texture& t) {
+        s += std::string("const ") + var + " = new Float32Array( [\n";
+        for (std::size_t i = 0; i < t.texels.size(); i += 4) {
+            s += "\t";
+            for (std::size_t c = 0; c < 4; ++c) s += detail::float_literal(t.texels[i + c]) + (c < 3 ? ", " : "");
+            s += i + 4 < t.texels.size() ? ",\n" : "\n";
+        }
+        s += "] );\n\n";
+    };
+    const auto halves = [&](const char* var, const rgba_texture& t) {
+        s += std::string("const ") + var + " = new Uint16Array( [\n";
+        for (std::size_t i = 0; i < t.texels.size(); i += 4) {
+            s += "\t";
+            for (std::size_t c = 0; c < 4; ++c) s += std::to_string(float_to_half(t.texels[i + c])) + (c < 3 ? ", " : "");
+            s += i + 4 < t.texels.size() ? ",\n" : "\n";
+        }
+        s += "] );\n\n";
+    };
+    floats("LTC_MAT_1", p.ltc_1);
+    floats("LTC_MAT_2", p.ltc_2);
+    halves("LTC_HALF_MAT_1", p.ltc_1);
+    halves("LTC_HALF_MAT_2", p.ltc_2);
+    const std::string w = std::to_string(p.ltc_1.width), h = std::to_string(p.ltc_1.height);
+    s += "function ltcTexture( data, type ) {\n";
+    s += "\tconst texture = new DataTexture( data, " + w + ", " + h +
+         ", RGBAFormat, type, UVMapping, ClampToEdgeWrapping, ClampToEdgeWrapping, LinearFilter, NearestFilter, 1 );\n";
+    s += "\ttexture.needsUpdate = true;\n";
+    s += "\treturn texture;\n";
+    s += "}\n\n";
+    s += "const RectAreaLightTexturesLib = {\n";
+    s += "\tLTC_HALF_1: null,\n\tLTC_HALF_2: null,\n\tLTC_FLOAT_1: null,\n\tLTC_FLOAT_2: null,\n";
+    s += "\tinit() {\n";
+    s += "\t\tif ( this.LTC_FLOAT_1 === null ) {\n";
+    s += "\t\t\tthis.LTC_FLOAT_1 = ltcTexture( LTC_MAT_1, FloatType );\n";
+    s += "\t\t\tthis.LTC_FLOAT_2 = ltcTexture( LTC_MAT_2, FloatType );\n";
+    s += "\t\t\tthis.LTC_HALF_1 = ltcTexture( LTC_HALF_MAT_1, HalfFloatType );\n";
+    s += "\t\t\tthis.LTC_HALF_2 = ltcTexture( LTC_HALF_MAT_2, HalfFloatType );\n";
+    s += "\t\t}\n";
+    s += "\t\treturn this;\n";
+    s += "\t}\n";
+    s += "};\n\n";
+    s += "export { RectAreaLightTexturesLib };\n";
+    return s;
 }
 
 LTC_NAMESPACE_END

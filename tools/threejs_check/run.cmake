@@ -1,0 +1,30 @@
+# cmake -DEXPORT=<ltc_export> -DNODE=<node> -DOUT=<scratch dir> -P tools/threejs_check/run.cmake
+#
+# Writes every shipped table with ltc_export (three.js module, raw float32, float16 DDS) and runs
+# check.mjs in Node: each module's textures must be the other files' texels, bit for bit.
+get_filename_component(_here "${CMAKE_CURRENT_LIST_FILE}" DIRECTORY)
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}/node_modules/three")
+file(COPY_FILE "${_here}/three_stub.mjs" "${OUT}/node_modules/three/index.mjs")
+file(WRITE "${OUT}/node_modules/three/package.json" "{ \"name\": \"three\", \"type\": \"module\", \"exports\": \"./index.mjs\" }\n")
+file(WRITE "${OUT}/package.json" "{ \"type\": \"module\" }\n")
+execute_process(COMMAND "${EXPORT}" --table all --formats threejs,raw,dds16 --out "${OUT}" --quiet
+                RESULT_VARIABLE _rc ERROR_VARIABLE _err)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "ltc_export failed: ${_err}")
+endif()
+file(GLOB _modules RELATIVE "${OUT}" "${OUT}/*_threejs.js")
+set(_names "")
+foreach(m IN LISTS _modules)
+  string(REGEX REPLACE "_threejs\\.js$" "" _n "${m}")
+  list(APPEND _names "${_n}")
+endforeach()
+list(LENGTH _names _count)
+if(_count LESS 1)
+  message(FATAL_ERROR "ltc_export wrote no three.js module")
+endif()
+execute_process(COMMAND "${NODE}" "${_here}/check.mjs" "${OUT}" ${_names} RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "check.mjs failed")
+endif()
+message(STATUS "${_count} three.js modules checked in Node")
