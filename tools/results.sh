@@ -48,8 +48,8 @@ report() {  # report FILE TITLE COMMAND...: the command's output as a text block
   echo "results: $title" >&2
   { echo "# $title"; echo; echo "$stamp"; echo; echo '```text'; "$@"; echo '```'; } >"$out/$file"
 }
-wanted ggx_error.md && report ggx_error.md "GGX shading against Monte Carlo ground truth (the one-lobe table and the three models of ltc::shade)" \
-  "$build/tools/ggx_error_report" --fit-sizes 0 --objectives none
+wanted ggx_error.md && report ggx_error.md "GGX shading against Monte Carlo ground truth (the one-lobe table, the three models of ltc::shade and the paper's table)" \
+  "$build/tools/ggx_error_report" --fit-sizes 0 --objectives none --peers "$root/../shared/peers"
 wanted shape_error.md && report shape_error.md "Disk, sphere, line and tube lights against Monte Carlo ground truth" \
   "$build/tools/shape_error_report"
 wanted textured_error.md && report textured_error.md "Textured lights against Monte Carlo ground truth" \

@@ -58,6 +58,12 @@ inline double ltc_estimate(const config& c, const fetch_fn& fetch, int m) {
     return part_scale(lobe) * std::max(0.0, I);  // the lights are front-facing: one-sided
 }
 
+/// part_scale of the table at the configuration's view angle and roughness: the albedo that the
+/// significance threshold and the "/alb" columns divide by.
+inline double albedo_at(const config& c, const fetch_fn& fetch) {
+    return part_scale(fetch(std::cos(thetas[c.theta] * deg), roughnesses[c.rough]));
+}
+
 struct evaluation {
     std::vector<double> value[method_count];  // LTC estimates per configuration
     std::vector<double> albedo;               // part_scale of the table at the configuration
@@ -69,7 +75,7 @@ inline evaluation evaluate(const std::vector<config>& grid, const fetch_fn& fetc
     ev.albedo.resize(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const auto& c = grid[i];
-        ev.albedo[i] = part_scale(fetch(std::cos(thetas[c.theta] * deg), roughnesses[c.rough]));
+        ev.albedo[i] = albedo_at(c, fetch);
         for (int m = 0; m < method_count; ++m)
             if (all_methods || m == exact) ev.value[m][i] = ltc_estimate(c, fetch, m);
     }

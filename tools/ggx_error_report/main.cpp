@@ -1,7 +1,7 @@
 // ggx_error_report -- how far LTC shading of polygonal lights is from the real GGX integral.
 //
 //   ggx_error_report [--fit-sizes 8,16,32] [--objectives integrals,combined,cells,two-lobe-fit,cosine-lobe-fit] [--objective-size 64]
-//                    [--target 0.002] [--threads K] [--grid on|off] [--f0 1] [--list]
+//                    [--target 0.002] [--threads K] [--grid on|off] [--f0 1] [--peers DIR] [--list]
 //
 // (--fit-sizes 0 skips section 7, --objectives none section 8; --list prints every configuration;
 // about 40 s on 2 cores, plus about 10-20 s per objective of section 8, 2 s for cells, 20 s for
@@ -33,7 +33,10 @@
 // objective of ltc::fit::options::goal (--objectives, --objective-size), against the same; then
 // (always) the three GGX models of ltc::shade (ltc/shading/ggx_models.hpp: one_lobe,
 // ltc_and_cosine, two_lobes), their specular term through ltc::shade<Model> against the same
-// ground truth over the same configurations, overall and with the same breakdowns.
+// ground truth over the same configurations, overall and with the same breakdowns; then the
+// paper's table (selfshadow/ltc_code's, read from --peers: ../shared/peers/README.md; skipped,
+// saying why, where it is absent) against the shipped one, each with the sphere approximation
+// (the engines' horizon) and with exact clipping.
 //
 // The grid (local frame N = +z, shading point at the origin, V = (sin theta_v, 0, cos theta_v)):
 //   theta_v    0, 30, 60, 80 degrees (--grid off: 15, 45, 65, 75)
@@ -55,8 +58,8 @@
 // Source files (tools/ggx_error_report/): grid.hpp (the configurations), ltc_estimate.hpp (the
 // LTC estimate with each method), statistics.hpp (relative errors and their summaries),
 // common/parallel_for.hpp (worker threads), report.hpp (the sections after the first: breakdowns.cpp,
-// horizon.cpp, clipless.cpp, fit_sizes.cpp, objectives.cpp, models.cpp), and this file: the command line, the
-// ground truth, the first section and the list of every configuration.
+// horizon.cpp, clipless.cpp, fit_sizes.cpp, objectives.cpp, models.cpp, paper_table.cpp), and this
+// file: the command line, the ground truth, the first section and the list of every configuration.
 #include "grid.hpp"
 #include "ltc_estimate.hpp"
 #include "common/cli.hpp"
@@ -110,6 +113,14 @@ std::vector<std::string> parse_names(const std::string& s) {
     return r;
 }
 
+// The peers' folder beside the source tree (tools/CMakeLists.txt), from which section 10 reads
+// the paper's table.
+#ifdef LTC_PEERS_DIR
+const char* const default_peers = LTC_PEERS_DIR;
+#else
+const char* const default_peers = "../shared/peers";
+#endif
+
 void print_help(const char* argv0) {
     std::printf(
         "usage: %s [options]\n"
@@ -117,8 +128,8 @@ void print_help(const char* argv0) {
         "LTC shading of polygonal lights (the shipped GGX table, each horizon-clipping method) against\n"
         "Monte Carlo ground truth over a grid of 720 configurations; then tables fitted here at other\n"
         "sizes and with other objectives, and the three GGX models of ltc::shade (one_lobe,\n"
-        "ltc_and_cosine, two_lobes) against the same ground truth (the file comment of\n"
-        "tools/ggx_error_report/main.cpp).\n"
+        "ltc_and_cosine, two_lobes) against the same ground truth, and the paper's table (from --peers)\n"
+        "against the shipped one (the file comment of tools/ggx_error_report/main.cpp).\n"
         "About 40 s on 2 cores, plus 10-20 s per objective.\n"
         "\n"
         "  --fit-sizes LIST       section 7's table sizes, comma-separated (default 8,16,32; 0: none)\n"
@@ -128,18 +139,21 @@ void print_help(const char* argv0) {
         "  --threads K            worker threads (default: all hardware threads)\n"
         "  --grid on|off          the documented grid, or the one between its values (default on)\n"
         "  --f0 F0                Schlick's F0 in the truth and the LTC, 0 .. 1 (default 1: no Fresnel)\n"
+        "  --peers DIR            the peers' folder, where ggx/ltc_code_ggx.txt is the paper's table (default\n"
+        "                         %s; without it section 10 is skipped)\n"
         "  --list                 also print every configuration (default off)\n"
         "  --help, -h             this text\n"
         "\n"
         "Section 8's fits: l3, integrals, combined (each also with +mag: integrals+mag), cells,\n"
         "two-lobe-fit, cosine-lobe-fit; none leaves the section out.\n"
         "Progress goes to stderr: a bar on a terminal, else a line per tenth.\n",
-        argv0);
+        argv0, default_peers);
 }
 
 /// The command line (common/cli.hpp): 0 to go on, 1 after --help, 2 on an error.
 int parse_args(int argc, char** argv, std::vector<int>& fit_sizes, std::vector<std::string>& objectives,
-               int& objective_size, double& target, unsigned& threads, int& which_grid, bool& list) {
+               int& objective_size, double& target, unsigned& threads, int& which_grid, std::string& peers,
+               bool& list) {
     using ltc_examples::option_status;
     const auto flag = [&](const std::string& a) {
         if (a != "--list") return false;
@@ -167,6 +181,8 @@ int parse_args(int argc, char** argv, std::vector<int>& fit_sizes, std::vector<s
         } else if (a == "--f0") {
             if (!v.is_number || v.number < 0 || v.number > 1) return option_status::bad;
             report_f0 = v.number;
+        } else if (a == "--peers") {
+            peers = t;
         } else {
             return option_status::unknown;
         }
@@ -185,7 +201,9 @@ int main(int argc, char** argv) {
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     bool list = false;
     int which_grid = 0;
-    if (const int r = parse_args(argc, argv, fit_sizes, objectives, objective_size, target, threads, which_grid, list); r != 0)
+    std::string peers = default_peers;
+    if (const int r = parse_args(argc, argv, fit_sizes, objectives, objective_size, target, threads, which_grid, peers, list);
+        r != 0)
         return r == 1 ? 0 : 2;
     const auto t_start = std::chrono::steady_clock::now();
 
@@ -282,9 +300,10 @@ int main(int argc, char** argv) {
     print_fit_sizes(grid, ev, fit_sizes, threads);
     if (!objectives.empty()) print_fit_objectives(grid, ev, objective_size, objectives, threads);
     print_models(grid, ev);
+    print_paper_table(grid, ev, shipped, peers);
 
     if (list) {
-        std::printf("\n10. Every configuration: GT +- std error, then each method's relative error\n");
+        std::printf("\n11. Every configuration: GT +- std error, then each method's relative error\n");
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const auto& c = grid[i];
             std::printf("  th %2.0f r %.2f %-9s s/d %.1f %-6s%s GT %.5e +- %.1e (%8llu)", thetas[c.theta], roughnesses[c.rough],

@@ -41,4 +41,10 @@ void print_fit_objectives(const std::vector<config>& grid, const evaluation& ev,
 /// term against the same ground truth (models.cpp).
 void print_models(const std::vector<config>& grid, const evaluation& ev);
 
+/// 10.: the paper's GGX table, read from the folder `peers` (ggx/ltc_code_ggx.txt), against the
+/// shipped one-lobe table, with the sphere approximation and with exact clipping; one line saying
+/// why where the file is absent (paper_table.cpp).
+void print_paper_table(const std::vector<config>& grid, const evaluation& ev, const fetch_fn& shipped,
+                       const std::string& peers);
+
 }  // namespace ggx_error_report
