@@ -15,7 +15,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <memory>
+#include <vector>
 
 LTC_NAMESPACE_BEGIN
 namespace batch {
@@ -30,8 +30,8 @@ inline T scalar_item(const matrices<T>& mats, const T* const* x, const T* const*
             for (int r = 0; r < 3; ++r) mi[c][r] = mats.entry[c][r][i];
     constexpr std::size_t stack = 16;
     glm::vec<3, T> buf[stack];
-    std::unique_ptr<glm::vec<3, T>[]> heap(n > stack ? new glm::vec<3, T>[n] : nullptr);
-    glm::vec<3, T>* v = heap ? heap.get() : buf;
+    std::vector<glm::vec<3, T>> heap(n > stack ? n : 0);
+    glm::vec<3, T>* v = n > stack ? heap.data() : buf;
     for (std::size_t k = 0; k < n; ++k) v[k] = glm::vec<3, T>(x[k][i], y[k][i], z[k][i]);
     return transformed<clamped_cosine<T, Policy>>::from_inverse(mi).integrate(v, n, s);
 }
