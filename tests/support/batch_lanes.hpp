@@ -86,6 +86,7 @@ std::size_t shading_kernel(ltc::batch::isa which, const ltc::batch::detail::shad
                            const ltc::batch::surfaces<T>& points, const ltc::batch::shading_results<T>& out,
                            const ltc::ltc_table* const (&tables)[K]) {
     static_assert(int(K) == ltc::batch::lobe_set<Lobes>::tables, "one table per table of the lobe set");
+    (void)which;  // only the x86 builds have kernels to choose between
 #if LTC_SIMD_AVX512
     if (which == ltc::batch::isa::avx512)
         return ltc::batch::detail::run_shade_avx512<Policy, Lobes>(tables, light, points, out);
