@@ -66,7 +66,8 @@ inline void gaussian_taps(double p, int n, double sigma, int& first, std::vector
 /// Runs body(i) for i in [0, n) on up to hardware_concurrency threads (contiguous blocks).
 template <typename Body>
 inline void parallel_for(int n, const Body& body) {
-    unsigned hw = std::thread::hardware_concurrency();
+    // Once per program: the call reads /sys on Linux, which every filter pass would pay again.
+    static const unsigned hw = std::thread::hardware_concurrency();
     int threads = static_cast<int>(hw == 0 ? 1 : hw);
     threads = std::min(threads, std::max(1, n / 16));
     if (threads <= 1) {
