@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -759,6 +760,53 @@ TEMPLATE_TEST_CASE("shade: bad input, the same answer for every light and model"
             CHECK(r.diffuse == v3(0));
         }
     }
+}
+
+
+TEMPLATE_TEST_CASE("shade(model, s, light): a model object, e.g. ggx::one_lobe_of over a user's own table, gives "
+                   "shade<Model>'s bits",
+                   "[shade][model_object]", float, double) {
+    using T = TestType;
+    using v3 = glm::vec<3, T>;
+    // The user's own copy of the shipped data (another address: what a device copy would be).
+    const std::vector<float> data(std::begin(ltc::tables::ggx_data), std::end(ltc::tables::ggx_data));
+    const ltc::ggx::one_lobe_of own{ltc::ltc_table(data.data(), ltc::tables::ggx_size, ltc::tables::ggx_size)};
+    ltc_test::rng rng(11);
+    for (int trial = 0; trial < 200; ++trial) {
+        const std::size_t n = 3 + trial % 4;
+        const double h = rng.uniform(0.2, 2.0), cx = rng.uniform(-1, 1), cy = rng.uniform(-1, 1);
+        std::vector<v3> v;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double a = 2 * 3.141592653589793 * (double(i) + 0.3 * rng.uniform()) / double(n);
+            v.push_back(v3(T(cx + std::cos(a)), T(cy + std::sin(a)), T(h)));
+        }
+        const ltc::surface<T> s{v3(T(rng.uniform(-0.5, 0.5)), T(rng.uniform(-0.5, 0.5)), T(0)), v3(0, 0, 1),
+                                v3(T(rng.uniform(-1, 1)), T(rng.uniform(-1, 1)), T(1)), T(rng.uniform(0, 1)),
+                                v3(T(0.04)), v3(T(0.5))};
+        const auto light = trial % 2 == 0 ? ltc::polygon_light<T>::one_sided(v.data(), n, v3(0, 0, -1), v3(T(1.5)))
+                                          : ltc::polygon_light<T>::two_sided(v.data(), n, v3(T(1.5)));
+        const ltc::shade_options o{trial % 3 == 0 ? ltc::horizon_clipping::shading_first : ltc::horizon_clipping::ltc_space};
+        CAPTURE(trial, n);
+        const auto want = ltc::shade<ltc::ggx::one_lobe>(s, light, o);
+        const auto got = ltc::shade(own, s, light, o);
+        CHECK(got.specular == want.specular);
+        CHECK(got.diffuse == want.diffuse);
+        CHECK(want.diffuse.x > T(0));
+        const auto shipped = ltc::shade(ltc::ggx::one_lobe_of{ltc::ggx::table}, s, light, o);
+        CHECK(shipped.specular == want.specular);
+        // A model whose fetch is static, as an object; and an explicit edge policy.
+        const auto two = ltc::shade(ltc::ggx::two_lobes{}, s, light, o);
+        CHECK(two.specular == ltc::shade<ltc::ggx::two_lobes>(s, light, o).specular);
+        const auto exact = ltc::shade<ltc::edge_policy::exact>(own, s, light);
+        CHECK(exact.specular == ltc::shade<ltc::ggx::one_lobe, ltc::edge_policy::exact>(s, light).specular);
+    }
+    // Bad input: the same 0 as shade<Model>.
+    const v3 quad[4] = {v3(-1, -1, 1), v3(1, -1, 1), v3(1, 1, 1), v3(-1, 1, 1)};
+    const auto light = ltc::polygon_light<T>::two_sided(quad, 4, v3(1));
+    const ltc::surface<T> zero_normal{v3(0), v3(0), v3(0, 0, 1), T(0.5), v3(T(0.04)), v3(T(0.5))};
+    const auto r = ltc::shade(own, zero_normal, light);
+    CHECK(r.specular == v3(0));
+    CHECK(r.diffuse == v3(0));
 }
 
 }  // namespace ltc_test_shade

@@ -60,7 +60,7 @@ LTC_HOST_DEVICE LTC_INLINE shading_point<T> model_shading_point(const surface<T>
 
 /// Model's lobes at s, p its model_shading_point.
 template <typename Model, typename T>
-LTC_INLINE auto fetch_lobes(const Model& model, const shading_point<T>& p, const surface<T>& s) {
+LTC_HOST_DEVICE LTC_INLINE auto fetch_lobes(const Model& model, const shading_point<T>& p, const surface<T>& s) {
     if constexpr (takes_tangent<Model, T>::value)
         return model.template fetch<T>(p.frame.cos_theta_v, view_azimuth(p.frame, s.view), s.roughness,
                                        s.roughness_bitangent);
@@ -70,7 +70,7 @@ LTC_INLINE auto fetch_lobes(const Model& model, const shading_point<T>& p, const
 
 /// shade's steps with a model object (static fetch or not: batch::shade's models with state).
 template <typename Policy, typename Model, typename T, typename Light>
-LTC_INLINE shading_result<T> shade_model(const Model& model, const surface<T>& s, const Light& light,
+LTC_HOST_DEVICE LTC_INLINE shading_result<T> shade_model(const Model& model, const surface<T>& s, const Light& light,
                                          const shade_options& options) {
     // x - x is 0 for finite x, NaN for an infinity or NaN: one test for the nine coordinates.
     const glm::vec<3, T> z = (s.position - s.position) + (s.normal - s.normal) + (s.view - s.view);
@@ -93,10 +93,23 @@ LTC_INLINE shading_result<T> shade_model(const Model& model, const surface<T>& s
 /// (ltc/shading/ggx_anisotropic_model.hpp), the sheen ltc::sheen::charlie
 /// (ltc/shading/sheen_models.hpp), or a user's own (the model interface in ggx_models.hpp). Bad
 /// input: the file's first comment. Policy: the edge terms of the polygon integrals
-/// (ltc/core/edge_policy.hpp).
+/// (ltc/core/edge_policy.hpp). CUDA: __host__ __device__ where Model's fetch and the light's
+/// shading are (the shipped tables are host data; on the device, shade(model, s, light) below
+/// with a model over a table in device memory).
 template <typename Model = ggx::ltc_and_cosine, typename Policy = edge_policy::automatic, typename T, typename Light>
-LTC_INLINE shading_result<T> shade(const surface<T>& s, const Light& light, const shade_options& options = {}) {
+LTC_HOST_DEVICE LTC_INLINE shading_result<T> shade(const surface<T>& s, const Light& light,
+                                                   const shade_options& options = {}) {
     return detail::shade_model<Policy>(Model{}, s, light, options);
+}
+
+/// shade<Model>(s, light, options) with a model object: a model with state, e.g. one over a
+/// user's own table, ltc::shade(ltc::ggx::one_lobe_of{table}, s, light) (ltc/shading/ggx_models.hpp),
+/// which is how a CUDA kernel shades with a table in device memory. The same steps and bits as
+/// shade<Model> for a model whose fetch is static.
+template <typename Policy = edge_policy::automatic, typename Model, typename T, typename Light>
+LTC_HOST_DEVICE LTC_INLINE shading_result<T> shade(const Model& model, const surface<T>& s, const Light& light,
+                                                   const shade_options& options = {}) {
+    return detail::shade_model<Policy>(model, s, light, options);
 }
 
 LTC_NAMESPACE_END

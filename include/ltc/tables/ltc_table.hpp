@@ -15,12 +15,12 @@
 #pragma once
 
 #include <ltc/config.hpp>
+#include <ltc/detail/math.hpp>
 
 #include <glm/glm.hpp>
 
 #include <cmath>
 #include <cstddef>
-#include <limits>
 
 LTC_NAMESPACE_BEGIN
 
@@ -110,14 +110,14 @@ class ltc_table {
   public:
     static constexpr int channels = channel::count;
 
-    constexpr ltc_table(const float* data, int width, int height) : data_(data), width_(width), height_(height) {}
+    LTC_HOST_DEVICE constexpr ltc_table(const float* data, int width, int height) : data_(data), width_(width), height_(height) {}
 
-    constexpr const float* data() const { return data_; }
-    constexpr int width() const { return width_; }    ///< nodes along u = sqrt(1 - cos theta_v)
-    constexpr int height() const { return height_; }  ///< nodes along v = roughness
+    LTC_HOST_DEVICE constexpr const float* data() const { return data_; }
+    LTC_HOST_DEVICE constexpr int width() const { return width_; }    ///< nodes along u = sqrt(1 - cos theta_v)
+    LTC_HOST_DEVICE constexpr int height() const { return height_; }  ///< nodes along v = roughness
 
     /// The stored value of a channel at node (t, a): t along u, a along roughness.
-    constexpr float node(int t, int a, int c) const {
+    LTC_HOST_DEVICE constexpr float node(int t, int a, int c) const {
         return data_[(static_cast<std::size_t>(a) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(t)) *
                          channels +
                      static_cast<std::size_t>(c)];
@@ -136,10 +136,10 @@ class ltc_table {
     /// Bilinear interpolation of all channels at the table coordinates (u, v) in [0, 1]^2 (clamped,
     /// NaN counts as 0): out[c] for c < channels.
     template <typename T>
-    void lookup(T u, T v, T* out) const {
+    LTC_HOST_DEVICE void lookup(T u, T v, T* out) const {
         u = detail::saturate(u);
         v = detail::saturate(v);
-        const T eps = std::numeric_limits<T>::epsilon();
+        const T eps = detail::epsilon<T>();
         const T su = u * T(width_ - 1);
         const T sv = v * T(height_ - 1);
         interpolate(locate_nodes(su, sv, T(4) * eps * su, T(4) * eps * sv), out);
@@ -147,11 +147,11 @@ class ltc_table {
 
     /// Where fetch(cos_theta_v, roughness) reads (inputs clamped to [0, 1], NaN counts as 0).
     template <typename T>
-    position<T> locate(T cos_theta_v, T roughness) const {
+    LTC_HOST_DEVICE position<T> locate(T cos_theta_v, T roughness) const {
         const T c = detail::saturate(cos_theta_v);
         const T u = std::sqrt(T(1) - c);
         const T v = detail::saturate(roughness);
-        const T eps = std::numeric_limits<T>::epsilon();
+        const T eps = detail::epsilon<T>();
         const T su = u * T(width_ - 1);
         const T sv = v * T(height_ - 1);
         // cos theta_v is known to eps, so s = (width - 1) sqrt(1 - c) only to about
@@ -164,13 +164,13 @@ class ltc_table {
     /// The LTC coefficients for the view angle cos(theta_v) and the roughness (alpha = roughness^2),
     /// both clamped to [0, 1] (NaN counts as 0).
     template <typename T>
-    ltc_coefficients<T> fetch(T cos_theta_v, T roughness) const {
+    LTC_HOST_DEVICE ltc_coefficients<T> fetch(T cos_theta_v, T roughness) const {
         return fetch_at(locate(cos_theta_v, roughness));
     }
 
     /// fetch at a position from locate (of this table, or of another of the same width and height).
     template <typename T>
-    ltc_coefficients<T> fetch_at(const position<T>& at) const {
+    LTC_HOST_DEVICE ltc_coefficients<T> fetch_at(const position<T>& at) const {
         T value[channels];
         interpolate(at, value);
         ltc_coefficients<T> r;
@@ -189,7 +189,7 @@ class ltc_table {
     /// a lobe whose matrix is fixed (the clamped cosine of ggx_cosine_lobe::fetch), a third of
     /// fetch_at's reads, each channel the bits fetch_at gives.
     template <typename T>
-    ltc_coefficients<T> fetch_scale_at(const position<T>& at) const {
+    LTC_HOST_DEVICE ltc_coefficients<T> fetch_scale_at(const position<T>& at) const {
         static_assert(channel::magnitude == channels - 2 && channel::fresnel == channels - 1,
                       "interpolate reads the channels from magnitude on");
         T value[channels];
@@ -202,7 +202,7 @@ class ltc_table {
 
   private:
     template <typename T>
-    position<T> locate_nodes(T su, T sv, T tol_u, T tol_v) const {
+    LTC_HOST_DEVICE position<T> locate_nodes(T su, T sv, T tol_u, T tol_v) const {
         position<T> p;
         detail::axis_position(su, width_, tol_u, p.t0, p.fu);
         detail::axis_position(sv, height_, tol_v, p.a0, p.fv);
@@ -213,7 +213,7 @@ class ltc_table {
 
     /// out[c] for the channels c from `first` on.
     template <typename T>
-    void interpolate(const position<T>& p, T* out, int first = 0) const {
+    LTC_HOST_DEVICE void interpolate(const position<T>& p, T* out, int first = 0) const {
         for (int c = first; c < channels; ++c) {
             // (1 - f) v0 + f v1: exactly v0 at f = 0 and v1 at f = 1, the mean at f = 1/2.
             const T lo = (T(1) - p.fu) * T(node(p.t0, p.a0, c)) + p.fu * T(node(p.t1, p.a0, c));
@@ -229,7 +229,7 @@ class ltc_table {
 
 /// Lobe l (0 or 1) of the data of a table of the two-lobe layout (ltc/tables/ggx_two_lobe.hpp,
 /// ggx_cosine_lobe.hpp: two square size x size tables, lobe 1's then lobe 2's).
-inline constexpr ltc_table two_lobe_layout_table(const float* data, int size, int l) {
+LTC_HOST_DEVICE inline constexpr ltc_table two_lobe_layout_table(const float* data, int size, int l) {
     return ltc_table(data + (l == 0 ? 0 : std::size_t(size) * std::size_t(size) * channel::count), size, size);
 }
 
