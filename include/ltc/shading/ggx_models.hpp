@@ -8,13 +8,11 @@
 //
 // The model interface (what a user's own model provides, e.g. over its own ltc_table):
 //   template <class T> using coefficients = lobes::one<T> (or ltc_and_cosine, two);
-//   template <class T> static coefficients<T> fetch(T cos_theta_v, T roughness);
-//   (or a const member fetch, the model passed as an object: ltc::shade(model, s, light), as
-//   one_lobe_of; LTC_HOST_DEVICE on fetch for CUDA kernels)
+//   template <class T> static coefficients<T> fetch(T cos_theta_v, T roughness);  (or a const
+//   member, the model passed as an object: ltc::shade(model, s, light), as one_lobe_of)
 //   anisotropic: fetch(T cos_theta_v, T phi_v, T roughness, T roughness_bitangent) instead
 //   (ltc::ggx::anisotropic, ltc/shading/ggx_anisotropic_model.hpp: the tangent frame).
-// Errors of each fit against the real GGX (Monte Carlo): docs/results/ggx_error.md; which to
-// choose: docs/shading.md, "Choosing a model".
+// Errors of each fit: docs/results/ggx_error.md; which to choose: docs/shading.md.
 #pragma once
 
 #include <ltc/config.hpp>
