@@ -321,43 +321,8 @@ struct anisotropic_objective {
     }
 };
 
-template <template <typename> class Brdf>
-anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alpha& alpha,
-                                      const anisotropic_moments& mom, int dims, anisotropic_parameters p,
-                                      const anisotropic_options& opt) {
-    anisotropic_node r;
-    r.magnitude = mom.magnitude;
-    r.fresnel = mom.fresnel;
-    anisotropic_sample_set samples;
-    integral_targets targets;
-    if (opt.goal != objective::l3) {
-        const std::vector<family_polygon> family = anisotropic_polygon_family(p.axis, alpha);
-        std::vector<double> g;
-        family_integrals<Brdf>(V, alpha, family, default_brdf_samples, default_polygon_samples, g, nullptr);
-        targets = significant_targets(family, g, mom.magnitude, opt.integral_floor);
-    }
-    double step = opt.initial_step;
-    for (int round = 0; round < std::max(1, opt.rounds); ++round) {
-        make_anisotropic_sample_set<Brdf>(V, alpha, p.matrix(), opt.error_samples, samples);
-        double f3 = 1;
-        if (opt.goal == objective::combined) {
-            const full_inverse_result inv = full_inverse(p.matrix());
-            f3 = samples.all(inv.inverse, 1.0 / inv.abs_determinant, r.magnitude).f3;
-            if (!(f3 > 0)) f3 = 1;
-        }
-        // The objective of a candidate m_inv (|det m_inv| = abs_det).
-        const auto objective_of = [&](const glm::dmat3& m_inv, double abs_det) {
-            if (opt.goal == objective::l3) return samples.l3(m_inv, abs_det, r.magnitude);
-            double e = integral_loss(targets, m_inv, r.magnitude);
-            if (opt.goal == objective::combined) {
-                const double l3 = std::cbrt(samples.l3(m_inv, abs_det, r.magnitude) / f3);
-                e += opt.l3_weight * l3 * l3;
-            }
-            return e;
-        };
-        p = anisotropic_minimize(dims, objective_of, p, step, opt, r.evaluations);
-        step *= 0.25;
-    }
+/// r's matrices and errors from the fitted parameters p, the errors on `samples`.
+inline void finish_node(anisotropic_node& r, const anisotropic_parameters& p, const anisotropic_sample_set& samples) {
     r.parameters = p;
     const full_inverse_result inv = full_inverse(p.matrix());
     r.m_inv = canonical_inverse(inv.inverse);
@@ -365,6 +330,24 @@ anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alp
     const auto s = samples.all(inv.inverse, 1.0 / inv.abs_determinant, r.magnitude);
     r.relative_l1 = s.f1 > 0 ? s.l1 / s.f1 : 0.0;
     r.relative_l3 = s.f3 > 0 ? std::cbrt(s.l3 / s.f3) : 0.0;
+}
+
+template <template <typename> class Brdf>
+anisotropic_node anisotropic_fit_from(const glm::dvec3& V, const anisotropic_alpha& alpha,
+                                      const anisotropic_moments& mom, int dims, anisotropic_parameters p,
+                                      const anisotropic_options& opt) {
+    anisotropic_node r;
+    r.magnitude = mom.magnitude;
+    r.fresnel = mom.fresnel;
+    anisotropic_objective objective;
+    objective.init<Brdf>(V, alpha, mom, p.axis, opt);
+    double step = opt.initial_step;
+    for (int round = 0; round < std::max(1, opt.rounds); ++round) {
+        objective.refresh<Brdf>(p.matrix());
+        p = anisotropic_minimize(dims, objective, p, step, opt, r.evaluations);
+        step *= 0.25;
+    }
+    finish_node(r, p, objective.samples);
     return r;
 }
 
@@ -418,13 +401,7 @@ anisotropic_node anisotropic_fit_thin(const glm::dvec3& V, const anisotropic_alp
         p = anisotropic_minimize(dims, objective_of, p, step, opt, r.evaluations);
         step *= 0.25;
     }
-    r.parameters = p;
-    const full_inverse_result inv = full_inverse(p.matrix());
-    r.m_inv = canonical_inverse(inv.inverse);
-    r.matrix = canonical_matrix(r.m_inv);
-    const auto s = node_objective.samples.all(inv.inverse, 1.0 / inv.abs_determinant, r.magnitude);
-    r.relative_l1 = s.f1 > 0 ? s.l1 / s.f1 : 0.0;
-    r.relative_l3 = s.f3 > 0 ? std::cbrt(s.l3 / s.f3) : 0.0;
+    finish_node(r, p, node_objective.samples);
     return r;
 }
 
