@@ -17,6 +17,7 @@
 #include "support/rng.hpp"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -348,6 +349,28 @@ TEMPLATE_TEST_CASE("shade: the line light is the thin tube's limit", "[shade][li
     }
 }
 
+/// A random convex n-gon in a plane z = h in [0.2, 2] above the origin's neighbourhood, its
+/// vertices counter-clockwise seen from above (right-hand normal +z).
+template <typename T>
+std::vector<glm::vec<3, T>> overhead_polygon(ltc_test::rng& rng, std::size_t n) {
+    const double h = rng.uniform(0.2, 2.0), cx = rng.uniform(-1, 1), cy = rng.uniform(-1, 1);
+    std::vector<glm::vec<3, T>> v;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = 2 * glm::pi<double>() * (double(i) + 0.3 * rng.uniform()) / double(n);
+        v.push_back(glm::vec<3, T>(T(cx + std::cos(a)), T(cy + std::sin(a)), T(h)));
+    }
+    return v;
+}
+
+/// A random surface point on z = 0 facing +z, roughness in [min_roughness, 1].
+template <typename T>
+ltc::surface<T> surface_below(ltc_test::rng& rng, double min_roughness) {
+    using v3 = glm::vec<3, T>;
+    const v3 position(T(rng.uniform(-0.5, 0.5)), T(rng.uniform(-0.5, 0.5)), T(0));
+    const v3 view(T(rng.uniform(-1, 1)), T(rng.uniform(-1, 1)), T(1));
+    return {position, v3(0, 0, 1), view, T(rng.uniform(min_roughness, 1)), v3(T(0.04)), v3(T(0.5))};
+}
+
 TEMPLATE_TEST_CASE("shade: a one-sided polygon light gives the same bits for either vertex order, and 0 from behind",
                    "[shade][winding]", float, double) {
     using T = TestType;
@@ -355,18 +378,9 @@ TEMPLATE_TEST_CASE("shade: a one-sided polygon light gives the same bits for eit
     ltc_test::rng rng(5);
     for (int trial = 0; trial < 200; ++trial) {
         const std::size_t n = 3 + trial % 4;
-        // A convex polygon in the plane z = h above the point, turning counter-clockwise seen from
-        // above (right-hand normal +z).
-        const double h = rng.uniform(0.2, 2.0), cx = rng.uniform(-1, 1), cy = rng.uniform(-1, 1);
-        std::vector<v3> ccw, cw;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double a = 2 * 3.141592653589793 * (double(i) + 0.3 * rng.uniform()) / double(n);
-            ccw.push_back(v3(T(cx + std::cos(a)), T(cy + std::sin(a)), T(h)));
-        }
-        cw.assign(ccw.rbegin(), ccw.rend());
-        const ltc::surface<T> s{v3(T(rng.uniform(-0.5, 0.5)), T(rng.uniform(-0.5, 0.5)), T(0)), v3(0, 0, 1),
-                                v3(T(rng.uniform(-1, 1)), T(rng.uniform(-1, 1)), T(1)), T(rng.uniform(0.05, 1)),
-                                v3(T(0.04)), v3(T(0.5))};
+        const std::vector<v3> ccw = overhead_polygon<T>(rng, n);
+        const std::vector<v3> cw(ccw.rbegin(), ccw.rend());
+        const ltc::surface<T> s = surface_below<T>(rng, 0.05);
         const v3 down(0, 0, -1), L(T(1.5));
         const auto a = ltc::polygon_light<T>::one_sided(ccw.data(), n, down, L);
         const auto b = ltc::polygon_light<T>::one_sided(cw.data(), n, down, L);
@@ -762,7 +776,6 @@ TEMPLATE_TEST_CASE("shade: bad input, the same answer for every light and model"
     }
 }
 
-
 TEMPLATE_TEST_CASE("shade(model, s, light): a model object, e.g. ggx::one_lobe_of over a user's own table, gives "
                    "shade<Model>'s bits",
                    "[shade][model_object]", float, double) {
@@ -774,15 +787,8 @@ TEMPLATE_TEST_CASE("shade(model, s, light): a model object, e.g. ggx::one_lobe_o
     ltc_test::rng rng(11);
     for (int trial = 0; trial < 200; ++trial) {
         const std::size_t n = 3 + trial % 4;
-        const double h = rng.uniform(0.2, 2.0), cx = rng.uniform(-1, 1), cy = rng.uniform(-1, 1);
-        std::vector<v3> v;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double a = 2 * 3.141592653589793 * (double(i) + 0.3 * rng.uniform()) / double(n);
-            v.push_back(v3(T(cx + std::cos(a)), T(cy + std::sin(a)), T(h)));
-        }
-        const ltc::surface<T> s{v3(T(rng.uniform(-0.5, 0.5)), T(rng.uniform(-0.5, 0.5)), T(0)), v3(0, 0, 1),
-                                v3(T(rng.uniform(-1, 1)), T(rng.uniform(-1, 1)), T(1)), T(rng.uniform(0, 1)),
-                                v3(T(0.04)), v3(T(0.5))};
+        const std::vector<v3> v = overhead_polygon<T>(rng, n);
+        const ltc::surface<T> s = surface_below<T>(rng, 0.0);
         const auto light = trial % 2 == 0 ? ltc::polygon_light<T>::one_sided(v.data(), n, v3(0, 0, -1), v3(T(1.5)))
                                           : ltc::polygon_light<T>::two_sided(v.data(), n, v3(T(1.5)));
         const ltc::shade_options o{trial % 3 == 0 ? ltc::horizon_clipping::shading_first : ltc::horizon_clipping::ltc_space};

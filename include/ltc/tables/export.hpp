@@ -339,28 +339,22 @@ inline std::string threejs_module(const paper_textures& p, const std::string& na
     if (!note.empty()) s += "// " + note + "\n";
     s += "import { ClampToEdgeWrapping, DataTexture, FloatType, HalfFloatType, LinearFilter, NearestFilter, "
          "RGBAFormat, UVMapping } from 'three';\n\n";
-    const auto floats = [&](const char* var, const rgba_texture& t) {
-        s += std::string("const ") + var + " = new Float32Array( [\n";
+    // One typed array of a texture's texels, four to a line, each value written by `value`.
+    const auto array = [&](const char* var, const char* type, const rgba_texture& t, auto value) {
+        s += std::string("const ") + var + " = new " + type + "( [\n";
         for (std::size_t i = 0; i < t.texels.size(); i += 4) {
             s += "\t";
-            for (std::size_t c = 0; c < 4; ++c) s += detail::float_literal(t.texels[i + c]) + (c < 3 ? ", " : "");
+            for (std::size_t c = 0; c < 4; ++c) s += value(t.texels[i + c]) + (c < 3 ? ", " : "");
             s += i + 4 < t.texels.size() ? ",\n" : "\n";
         }
         s += "] );\n\n";
     };
-    const auto halves = [&](const char* var, const rgba_texture& t) {
-        s += std::string("const ") + var + " = new Uint16Array( [\n";
-        for (std::size_t i = 0; i < t.texels.size(); i += 4) {
-            s += "\t";
-            for (std::size_t c = 0; c < 4; ++c) s += std::to_string(float_to_half(t.texels[i + c])) + (c < 3 ? ", " : "");
-            s += i + 4 < t.texels.size() ? ",\n" : "\n";
-        }
-        s += "] );\n\n";
-    };
-    floats("LTC_MAT_1", p.ltc_1);
-    floats("LTC_MAT_2", p.ltc_2);
-    halves("LTC_HALF_MAT_1", p.ltc_1);
-    halves("LTC_HALF_MAT_2", p.ltc_2);
+    const auto decimal = [](float v) { return detail::float_literal(v); };
+    const auto half_bits = [](float v) { return std::to_string(float_to_half(v)); };
+    array("LTC_MAT_1", "Float32Array", p.ltc_1, decimal);
+    array("LTC_MAT_2", "Float32Array", p.ltc_2, decimal);
+    array("LTC_HALF_MAT_1", "Uint16Array", p.ltc_1, half_bits);
+    array("LTC_HALF_MAT_2", "Uint16Array", p.ltc_2, half_bits);
     const std::string w = std::to_string(p.ltc_1.width), h = std::to_string(p.ltc_1.height);
     s += "function ltcTexture( data, type ) {\n";
     s += "\tconst texture = new DataTexture( data, " + w + ", " + h +
