@@ -19,6 +19,7 @@
 //     difference| there.
 #include "support/batch_lanes.hpp"
 #include "support/rng.hpp"
+#include "support/shading_tolerance.hpp"
 
 #include <ltc/shading/ggx_fetch.hpp>
 #include <ltc/shading/shading_frame.hpp>
@@ -33,53 +34,7 @@
 
 namespace ltc_test_batch_lanes {  // the file's own names, apart from the other files of a unity batch
 
-namespace {
-
-constexpr double kU = 0x1.0p-24;
-
-double cross_bound(double delta_a, double a, double delta_b, double b) {
-    return 2 * (delta_a * b + a * delta_b) + 2 * kU * a * b;
-}
-
-// The frame's tolerance (file comment) for unit-ish N, V: t1, t2, n, cos theta_v.
-struct frame_tolerance {
-    double t1, t2, n, cos_theta_v;
-};
-
-frame_tolerance tolerance(const glm::vec3& N, const glm::vec3& V) {
-    const double delta = 12 * kU;
-    const glm::dvec3 n = glm::normalize(glm::dvec3(N)), v = glm::normalize(glm::dvec3(V));
-    const glm::dvec3 d = glm::dot(n, v) >= 0 ? n - v : n + v;
-    const glm::dvec3 w = glm::cross(v, d), t = glm::cross(n, w);
-    const double dd = 2 * delta + kU * glm::length(d);
-    const double dw = std::sqrt(3.0) * cross_bound(delta, 1, dd, glm::length(d));
-    const double dt = std::sqrt(3.0) * cross_bound(delta, 1, dw, glm::length(w));
-    frame_tolerance f;
-    f.n = delta;
-    f.t1 = glm::length(t) == 0 ? 8 * delta : 2 * dt / glm::length(t) + delta;
-    f.t2 = 2 * (delta + f.t1) + 2 * kU;
-    f.cos_theta_v = 2 * std::sqrt(3.0) * delta + 6 * kU;
-    return f;
-}
-
-// The fetch's tolerance for channel c at (cos theta_v, roughness) (file comment).
-double fetch_tolerance(float cos_theta_v, float roughness, int c) {
-    const ltc::ltc_table& t = ltc::ggx::table;
-    const double su = std::sqrt(1.0 - std::clamp(double(cos_theta_v), 0.0, 1.0)) * (t.width() - 1);
-    const double sv = std::clamp(double(roughness), 0.0, 1.0) * (t.height() - 1);
-    const int t0 = std::min(int(su), t.width() - 2), a0 = std::min(int(sv), t.height() - 2);
-    double big = 0;
-    for (int dt = 0; dt < 2; ++dt)
-        for (int da = 0; da < 2; ++da) big = std::max(big, double(std::abs(t.node(t0 + dt, a0 + da, c))));
-    const double eps = 0x1.0p-23, w1 = t.width() - 1;
-    const double tol_u = eps * (w1 * w1 / std::max(su, 1.0) + 2 * su), tol_v = 4 * eps * sv;
-    double snap = 0;
-    if (std::abs(std::abs(su - std::floor(su + 0.5)) - tol_u) <= 8 * kU * (1 + su)) snap += tol_u * 2 * big;
-    if (std::abs(std::abs(sv - std::floor(sv + 0.5)) - tol_v) <= 8 * kU * (1 + sv)) snap += tol_v * 2 * big;
-    return 8 * kU * big + snap;
-}
-
-}  // namespace
+namespace tolerance = ltc_test::shading_tolerance;  // the frame's and the fetch's (file comment)
 
 TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions", "[batch][shading]") {
     const std::size_t count = 4096;
@@ -112,7 +67,7 @@ TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions
                 continue;
             }
             ++checked;
-            const frame_tolerance tol = tolerance(N, V);
+            const tolerance::frame_bounds tol = tolerance::frame(N, V);
             const glm::vec3 lane[3] = {{out.frame[0][i], out.frame[1][i], out.frame[2][i]},
                                        {out.frame[3][i], out.frame[4][i], out.frame[5][i]},
                                        {out.frame[6][i], out.frame[7][i], out.frame[8][i]}};
@@ -131,7 +86,7 @@ TEST_CASE("batch shading lanes: frame and table fetch match the scalar functions
             const ltc::ltc_coefficients<float> s = ltc::ggx::fetch(cos_lane, in[6][i]);
             const float expected[6] = {s.m_inv[0][0], s.m_inv[0][2], s.m_inv[2][0], s.m_inv[2][2], s.magnitude, s.fresnel};
             for (int c = 0; c < 6; ++c) {
-                const double bound_c = fetch_tolerance(cos_lane, in[6][i], c);
+                const double bound_c = tolerance::fetch(ltc::ggx::table, cos_lane, in[6][i], c);
                 CAPTURE(static_cast<int>(isa), i, c, out.channel[c][i], expected[c], bound_c);
                 CHECK(std::abs(double(out.channel[c][i]) - double(expected[c])) <= bound_c);
             }

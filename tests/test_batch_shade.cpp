@@ -11,15 +11,17 @@
 // and coefficients the lanes computed (tests/support/batch_lanes.hpp runs the same lane stages;
 // those stages against the scalar frame and fetch: tests/test_batch_lanes.cpp): the integrals
 // differ, each within ltc_test::clip_tolerance plus the local vertices' rounding amplified by
-// M^-1's conditioning (tolerance() below), times the lobe's factor, plus 4 u of the value; the
-// lobes' terms add, and so do their tolerances, plus 2 u of the sum per added lobe. Over many
+// M^-1's conditioning, times the lobe's factor, plus 4 u of the value (tests/support/
+// shading_tolerance.hpp); the lobes' terms add, and so do their tolerances, plus 2 u of the sum per added lobe. Over many
 // lights the frame and the fetch are the scalar ones, and only the integrals differ, lobe by
 // lobe within the same tolerance (the cosine lobe's: the LTC of M^-1 = I, whose integral is E).
 // u is the unit roundoff of T (the kernel's double lanes normalize by 1 / sqrt).
 #include "support/batch_lanes.hpp"
+#include "support/batch_points.hpp"
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"
 #include "support/rounding_bound.hpp"
+#include "support/shading_tolerance.hpp"
 
 #include <ltc/shading/batch_cosine_lobe.hpp>
 #include <ltc/shading/batch_lobes.hpp>
@@ -48,49 +50,12 @@ namespace ltc_test_batch_shade {  // the file's own names, apart from the other 
 
 namespace {
 
+namespace tolerance = ltc_test::shading_tolerance;
+using tolerance::violations;
+using tolerance::walked;
 using Policy = ltc::edge_policy::minimax_rational;
 
-template <typename T>
-constexpr double unit_roundoff = std::numeric_limits<T>::epsilon() / 2;
-
-// count random shading points in SoA (P near the origin, N and V random, some V below the
-// surface, some V = N exactly), rounded to float (then widened exactly for T = double).
-template <typename T>
-struct points_of {
-    using vec3 = glm::vec<3, T>;
-    std::size_t count;
-    // px py pz nx ny nz vx vy vz roughness f0 rgb albedo rgb, then (anisotropic models only)
-    // tangent xyz roughness_bitangent, from a stream of their own (the first 16 as before)
-    std::vector<T> a[20];
-    points_of(std::size_t n, std::uint64_t seed) : count(n) {
-        ltc_test::rng g(seed), h(seed ^ 0x7a6e67656e74ULL);
-        for (std::size_t i = 0; i < n; ++i) {
-            const glm::dvec3 P(g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-0.5, 0.5));
-            const glm::dvec3 N = g.direction() * g.uniform(0.5, 2.0);
-            glm::dvec3 V = g.direction();
-            if (glm::dot(V, N) < 0 && i % 8 != 0) V = -V;
-            if (i % 101 == 0) V = N;
-            const double v[16] = {P.x, P.y, P.z, N.x, N.y, N.z, V.x, V.y, V.z, g.uniform(0.02, 1.0),
-                                  g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform(), g.uniform()};
-            for (int k = 0; k < 16; ++k) a[k].push_back(T(float(v[k])));
-            const glm::dvec3 t = h.direction();
-            const double w[4] = {t.x, t.y, t.z, h.uniform(0.02, 1.0)};
-            for (int k = 0; k < 4; ++k) a[16 + k].push_back(T(float(w[k])));
-        }
-    }
-    vec3 vec(int c, std::size_t i) const { return vec3(a[c][i], a[c + 1][i], a[c + 2][i]); }
-    ltc::batch::surfaces<T> view() const {
-        return {count, {a[0].data(), a[1].data(), a[2].data()}, {a[3].data(), a[4].data(), a[5].data()},
-                {a[6].data(), a[7].data(), a[8].data()}, a[9].data(), {a[10].data(), a[11].data(), a[12].data()},
-                {a[13].data(), a[14].data(), a[15].data()}, {a[16].data(), a[17].data(), a[18].data()},
-                a[19].data()};
-    }
-    ltc::batch::shading_points<T> old() const {
-        const T* c[16];
-        for (int k = 0; k < 16; ++k) c[k] = a[k].data();
-        return ltc::batch::shading_points<T>::from_columns(c);
-    }
-};
+using ltc_test::points_of;
 
 template <typename T>
 struct results_of {
@@ -124,69 +89,6 @@ bool same_bits(const results_of<T>& a, const results_of<T>& b) {
         if (a.c[k].size() != b.c[k].size() || std::memcmp(a.c[k].data(), b.c[k].data(), a.c[k].size() * sizeof(T)) != 0)
             return false;
     return true;
-}
-
-// The tolerance of the file comment for one lobe at a point shaded in `frame`, the light's
-// vertices in the order it walks them; `value` the lobe's own shading (its 4 u relative part).
-template <typename T>
-ltc::shading_result<double> tolerance(const ltc::shading_frame<T>& frame, const ltc::ltc_coefficients<T>& lobe,
-                                      const glm::vec<3, T>& P, const glm::vec<3, T>& F0, const glm::vec<3, T>& albedo,
-                                      const glm::vec<3, T>& radiance, const std::vector<glm::vec<3, T>>& light,
-                                      const ltc::shading_result<T>& value) {
-    constexpr double u = unit_roundoff<T>;
-    std::vector<glm::vec<3, T>> local;
-    for (const auto& p : light) local.push_back(frame.to_local(p - P));
-    // Each local component within 4 u |p - P| of the exact one on either side, the local
-    // directions within 8 sqrt(3) u of each other, moved by M^-1 by its conditioning at the vertex.
-    using namespace ltc_test::polygon_integration;
-    poly_t q_e, q_i;
-    std::vector<double> d_e, d_i;
-    const glm::dmat3 m(lobe.m_inv), abs_m = glm::dmat3(glm::abs(m[0]), glm::abs(m[1]), glm::abs(m[2]));
-    for (const auto& l : local) {
-        const glm::dvec3 ld(l), ql = m * ld;
-        q_e.push_back(ld), q_i.push_back(ql);
-        d_e.push_back(8 * std::sqrt(3.0));
-        d_i.push_back(8 * std::sqrt(3.0) * glm::length(abs_m * glm::abs(ld)) / glm::length(ql));
-    }
-    const double tol_e = ltc_test::clip_tolerance<Policy>(glm::mat<3, 3, T>(T(1)), local) +
-                         u * rounding_parts(form::cosine, q_e, d_e, 0).region / (2 * ltc_test::kPi);
-    const double tol_i = ltc_test::clip_tolerance<Policy>(lobe.m_inv, local) +
-                         u * rounding_parts(form::cosine, q_i, d_i, 0).region / (2 * ltc_test::kPi);
-    ltc::shading_result<double> t;
-    for (int c = 0; c < 3; ++c) {
-        const double brdf = std::abs(double(F0[c]) * lobe.magnitude + (1 - double(F0[c])) * lobe.fresnel);
-        t.specular[c] = double(radiance[c]) * brdf * tol_i + 4 * u * std::abs(value.specular[c]);
-        t.diffuse[c] = double(albedo[c]) * double(radiance[c]) * tol_e + 4 * u * std::abs(value.diffuse[c]);
-    }
-    return t;
-}
-
-template <typename T>
-std::size_t violations(const ltc::shading_result<T>& got, const ltc::shading_result<T>& want,
-                       const ltc::shading_result<double>& tol) {
-    std::size_t v = 0;
-    for (int c = 0; c < 3; ++c) {
-        v += !(std::abs(double(got.specular[c]) - want.specular[c]) <= tol.specular[c]);
-        v += !(std::abs(double(got.diffuse[c]) - want.diffuse[c]) <= tol.diffuse[c]);
-    }
-    return v;
-}
-
-// The lobes of a lobe set, each as one LTC (the cosine's with M^-1 = I, its integral E), in the
-// order the kernel and ltc::shade_lobes add them.
-template <typename T>
-std::vector<ltc::ltc_coefficients<T>> lobe_list(const ltc::lobes::one<T>& c) {
-    return {c.ltc};
-}
-template <typename T>
-std::vector<ltc::ltc_coefficients<T>> lobe_list(const ltc::lobes::two<T>& c) {
-    return {c.first, c.second};
-}
-template <typename T>
-std::vector<ltc::ltc_coefficients<T>> lobe_list(const ltc::lobes::ltc_and_cosine<T>& c) {
-    ltc::ltc_coefficients<T> cosine = c.cosine;
-    cosine.m_inv = glm::mat<3, 3, T>(T(1));
-    return {cosine, c.ltc};
 }
 
 // The coefficients the lanes computed for point i (lane stages of each of the model's tables).
@@ -242,13 +144,6 @@ std::vector<glm::vec<3, T>> reversed(std::vector<glm::vec<3, T>> v) {
     return {v.rbegin(), v.rend()};
 }
 
-template <typename T>
-std::vector<glm::vec<3, T>> walked(const ltc::polygon_light<T>& light) {
-    std::vector<glm::vec<3, T>> w;
-    for (std::size_t k = 0; k < light.size(); ++k) w.push_back(light.vertex(k));
-    return w;
-}
-
 // The light's vertices by axis in its walking order, as batch::shade hands them to the kernel.
 template <typename T>
 struct kernel_light {
@@ -266,7 +161,6 @@ template <typename Model, typename T>
 void check_points(std::uint64_t seed) {
     using vec3 = glm::vec<3, T>;
     using Lobes = typename Model::template coefficients<T>;
-    constexpr double u = unit_roundoff<T>;
     const std::size_t count = 1031;  // not a multiple of any width: the tail runs
     const points_of<T> pts(count, seed);
     const auto surfaces = pts.view();
@@ -325,20 +219,7 @@ void check_points(std::uint64_t seed) {
                     const ltc::shading_point<T> point{frame, P, F0, albedo};
                     const Lobes c = lane_coefficients(stages, i, static_cast<Lobes*>(nullptr));
                     const auto want = ltc::shade_lobes<Policy>(point, c, light, ltc::shade_options{});
-                    ltc::shading_result<double> tol;
-                    ltc::shading_result<double> sum;
-                    int l = 0;
-                    for (const auto& lobe : lobe_list(c)) {
-                        const auto one =
-                            ltc::shade_lobes<Policy>(point, ltc::lobes::one<T>{lobe}, light, ltc::shade_options{});
-                        const auto t = tolerance(frame, lobe, P, F0, albedo, radiance, walk, one);
-                        if (l++ == 0) {
-                            tol = t, sum.specular = glm::dvec3(one.specular);
-                        } else {
-                            sum.specular += glm::dvec3(one.specular);
-                            tol.specular += t.specular + 2 * u * glm::abs(sum.specular);
-                        }
-                    }
+                    const auto tol = tolerance::lobes<Policy>(point, c, light);
                     const std::size_t viol = violations(got, want, tol);
                     CAPTURE(got.specular.x, want.specular.x, tol.specular.x, got.diffuse.x, want.diffuse.x,
                             tol.diffuse.x);
@@ -603,7 +484,6 @@ struct lights_of {
 template <typename Model, typename T, std::size_t N>
 void check_lights(std::uint64_t seed) {
     using vec3 = glm::vec<3, T>;
-    constexpr double u = unit_roundoff<T>;
     const std::size_t count = 517;  // blocks of 16-multiples: the last count % width are the tail
     const lights_of<T, N> soa(count, seed), soa_reversed(count, seed, true), grazing(count, seed + 1, false, true);
     const vec3 P(T(0.1), T(-0.2), T(0.05)), Nrm(T(0.2), T(0.1), T(1)), V(T(0.7), T(-0.3), T(0.5)),
@@ -620,7 +500,6 @@ void check_lights(std::uint64_t seed) {
                     ltc::batch::shade<Model, Policy>(s, lights, out.view(), isa);
                     // shade's frame and fetch (the tangent frame for anisotropic models).
                     const ltc::shading_point<T> point = ltc::detail::model_shading_point<Model>(s);
-                    const ltc::shading_frame<T> frame = point.frame;
                     const auto c = ltc::detail::fetch_lobes(Model{}, point, s);
                     const std::size_t width = ltc::batch::lane_count<T>(isa);
                     std::size_t bad = 0, exact = 0;
@@ -633,19 +512,7 @@ void check_lights(std::uint64_t seed) {
                             exact += !same_bits(got, want);
                             continue;
                         }
-                        ltc::shading_result<double> tol, sum;
-                        int l = 0;
-                        for (const auto& lobe : lobe_list(c)) {
-                            const auto one =
-                                ltc::shade_lobes<Policy>(point, ltc::lobes::one<T>{lobe}, light, ltc::shade_options{});
-                            const auto t = tolerance(frame, lobe, P, F0, albedo, light.radiance(), walked(light), one);
-                            if (l++ == 0) {
-                                tol = t, sum.specular = glm::dvec3(one.specular);
-                            } else {
-                                sum.specular += glm::dvec3(one.specular);
-                                tol.specular += t.specular + 2 * u * glm::abs(sum.specular);
-                            }
-                        }
+                        const auto tol = tolerance::lobes<Policy>(point, c, light);
                         const std::size_t viol = violations(got, want, tol);
                         CAPTURE(static_cast<int>(isa), static_cast<int>(f), roughness, j, got.specular.x, want.specular.x,
                                 tol.specular.x, got.diffuse.x, want.diffuse.x, tol.diffuse.x);
