@@ -383,7 +383,7 @@ inline std::string threejs_module(const paper_textures& p, const std::string& na
 enum class eevee_declaration {
     float_arrays,  ///< namespace blender::eevee::lut { const float ltc_mat_ggx[64][64][4]; ltc_mag_ggx[64][64][2] }
     vec_base,      ///< namespace blender::eevee::lut { const VecBase<float, 4> ltc_mat_ggx[64][64]; VecBase<float, 2> ... }
-    flat_c         ///< C, no namespace: const float ltc_mat_ggx[64 * 64 * 4]; ltc_mag_ggx[64 * 64 * 2]
+    flat_c         ///< no namespace (C, or C++ under eevee_lut.h's extern "C"): const float ltc_mat_ggx[64 * 64 * 4]; ...
 };
 
 /// The definitions of EEVEE's two LTC arrays (Blender's source/blender/draw/engines/eevee*/
@@ -402,7 +402,7 @@ inline std::string eevee_lut_source(const paper_textures& p, eevee_declaration d
     const bool flat = declaration == eevee_declaration::flat_c;
     const std::string w = std::to_string(p.ltc_1.width), h = std::to_string(p.ltc_1.height);
     std::string s = "/* EEVEE's LTC arrays ltc_mat_ggx and ltc_mag_ggx, written by ltc_export from the ltc library's\n";
-    s += " * table, in place of the definitions in eevee_lut." + std::string(flat ? "c" : "cc") +
+    s += std::string(" * table, in place of the definitions in ") + (flat ? "eevee_lut.c or eevee_lut.cc" : "eevee_lut.cc") +
          " (delete those, append this).\n";
     s += " * [y][x]: x = roughness node (roughness = x / " + std::to_string(p.ltc_1.width - 1) +
          "), y = sqrt(1 - cos theta_v) node (y / " + std::to_string(p.ltc_1.height - 1) + ").\n";
