@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -144,6 +145,30 @@ std::vector<float> shader_texels(const std::string& text, const std::string& ope
             while (*p == ',' || *p == ' ') ++p;
         }
         k = std::size_t(p - text.c_str());
+    }
+    return out;
+}
+
+/// The floats of a C/C++ array definition (e.g. "const float ltc_mat_ggx[64][64][4] = {") up to
+/// its "};", each literal parsed as the compiler does (to the nearest float); `braces` counts the
+/// "{" inside, the nesting of the initializer.
+std::vector<float> c_array(const std::string& text, const std::string& open, int& braces) {
+    std::vector<float> out;
+    const std::size_t at = text.find(open);
+    REQUIRE(at != std::string::npos);
+    const std::size_t end = text.find("};", at + open.size());
+    REQUIRE(end != std::string::npos);
+    const std::string body = text.substr(at + open.size(), end - at - open.size());
+    braces = 0;
+    const char* p = body.c_str();
+    for (;;) {
+        while (*p == ' ' || *p == '\n' || *p == ',' || *p == '{' || *p == '}') braces += *p++ == '{';
+        if (*p == 0) break;
+        char* next = nullptr;
+        out.push_back(std::strtof(p, &next));
+        REQUIRE(next != p);
+        REQUIRE(*next == 'f');  // a float literal, not a double narrowed by the initializer
+        p = next + 1;
     }
     return out;
 }
@@ -450,6 +475,76 @@ TEST_CASE("shader_constants: the GLSL and HLSL arrays hold every texel, reading 
             for (std::size_t k = 0; k < texels.size(); ++k) mismatches += bits_of(texels[k]) != bits_of(t->texels[k]);
             CHECK(mismatches == 0);
         }
+    }
+}
+
+TEST_CASE("eevee_lut_source: EEVEE's ltc_mat_ggx and ltc_mag_ggx, sampled as its shaders do, are the table at every node",
+          "[export]") {
+    const ltc::ltc_table& table = ltc::ggx::table;
+    const ltc::paper_textures p = ltc::to_paper_textures(table);
+    const int n = table.width(), m = table.height();  // u nodes (EEVEE's rows), roughness nodes (its columns)
+    REQUIRE(n == 64);  // EEVEE's UTIL_TEX_SIZE
+    REQUIRE(m == 64);
+    const std::string rows = std::to_string(n), columns = std::to_string(m);
+    using ltc::eevee_declaration;
+    for (const eevee_declaration declaration :
+         {eevee_declaration::float_arrays, eevee_declaration::vec_base, eevee_declaration::flat_c}) {
+        const std::string text = ltc::eevee_lut_source(p, declaration, "a note");
+        const bool flat = declaration == eevee_declaration::flat_c;
+        std::string mat_open, mag_open;
+        switch (declaration) {
+            case eevee_declaration::float_arrays:
+                mat_open = "const float ltc_mat_ggx[" + rows + "][" + columns + "][4] = {";
+                mag_open = "const float ltc_mag_ggx[" + rows + "][" + columns + "][2] = {";
+                break;
+            case eevee_declaration::vec_base:
+                mat_open = "const VecBase<float, 4> ltc_mat_ggx[" + rows + "][" + columns + "] = {";
+                mag_open = "const VecBase<float, 2> ltc_mag_ggx[" + rows + "][" + columns + "] = {";
+                break;
+            case eevee_declaration::flat_c:
+                mat_open = "const float ltc_mat_ggx[" + rows + " * " + columns + " * 4] = {";
+                mag_open = "const float ltc_mag_ggx[" + rows + " * " + columns + " * 2] = {";
+                break;
+        }
+        int mat_braces = 0, mag_braces = 0;
+        const std::vector<float> mat = c_array(text, mat_open, mat_braces);
+        const std::vector<float> mag = c_array(text, mag_open, mag_braces);
+        const std::size_t texels = std::size_t(n) * std::size_t(m);
+        REQUIRE(mat.size() == texels * 4);
+        REQUIRE(mag.size() == texels * 2);
+        // Nested: a brace for each row and each texel (what float[64][64][4] and VecBase<float, 4>[64][64]
+        // both take); flat: none inside.
+        CHECK(mat_braces == (flat ? 0 : n + n * m));
+        CHECK(mag_braces == (flat ? 0 : n + n * m));
+        CHECK((text.find("namespace blender::eevee::lut {") != std::string::npos) == !flat);
+        CHECK(text.find("/* a note */") != std::string::npos);
+        int mismatches = 0, off_node = 0, beyond_half = 0;
+        for (int t = 0; t < n; ++t) {
+            for (int a = 0; a < m; ++a) {
+                // utility_tx_sample_lut: uv = (roughness, sqrt(clamp(1 - cos_theta, 0, 1))) *
+                // UTIL_TEX_UV_SCALE + UTIL_TEX_UV_BIAS, (64 - 1) / 64 and 0.5 / 64: the centre of texel (a, t).
+                const double roughness = double(a) / (m - 1), u = double(t) / (n - 1), cos_theta = 1 - u * u;
+                const double uv_x = roughness * (m - 1) / m + 0.5 / m;
+                const double uv_y = std::sqrt(std::min(std::max(1 - cos_theta, 0.0), 1.0)) * (n - 1) / n + 0.5 / n;
+                off_node += std::abs(uv_x * m - 0.5 - a) > 1e-9 || std::abs(uv_y * n - 0.5 - t) > 1e-9;
+                // The layer is the array copied row by row: texel (x, y) = ltc_mat_ggx[y][x].
+                const std::size_t i = std::size_t(t) * std::size_t(m) + std::size_t(a);
+                const auto v = [&](std::size_t c) { return mat[4 * i + c]; };
+                // ltc::unpack: float3x3(float3(v.x, 0, v.y), float3(0, 1, 0), float3(v.z, 0, v.w)) (columns).
+                const glm::mat3 m_inv(glm::vec3(v(0), 0, v(1)), glm::vec3(0, 1, 0), glm::vec3(v(2), 0, v(3)));
+                const ltc::ltc_coefficients<double> c = ltc::ggx::fetch(cos_theta, roughness);
+                for (int col = 0; col < 3; ++col)
+                    for (int row = 0; row < 3; ++row) mismatches += double(m_inv[col][row]) != c.m_inv[col][row];
+                mismatches += double(mag[2 * i]) != c.magnitude;
+                mismatches += double(mag[2 * i + 1]) != c.fresnel;
+                // EEVEE uploads its utility texture as RGBA16F.
+                for (std::size_t k = 0; k < 4; ++k) beyond_half += std::abs(v(k)) >= 65520.0f;
+                beyond_half += std::abs(mag[2 * i]) >= 65520.0f || std::abs(mag[2 * i + 1]) >= 65520.0f;
+            }
+        }
+        CHECK(off_node == 0);
+        CHECK(mismatches == 0);
+        CHECK(beyond_half == 0);
     }
 }
 

@@ -1,11 +1,13 @@
 // ltc_export -- writes the shipped GGX tables as the files GPU renderers load: the paper's two RGBA
 // textures (ltc_1: the inverse matrix, ltc_2: magnitude and Fresnel) as DDS float32 and float16,
-// as raw little-endian float32 with a JSON descriptor, and as GLSL and HLSL constant arrays:
+// as raw little-endian float32 with a JSON descriptor, as GLSL and HLSL constant arrays, as a
+// three.js module and as the C/C++ arrays of Blender's EEVEE:
 //
 //   ltc_export --out build/ltc_textures
 //
 // The conversion is ltc/tables/export.hpp's (to_paper_textures, write_dds, write_raw_float32,
-// raw_descriptor_json); texture x = roughness node, y = sqrt(1 - cos theta_v) node.
+// raw_descriptor_json, shader_constants, threejs_module, eevee_lut_source); texture x = roughness
+// node, y = sqrt(1 - cos theta_v) node.
 #include "common/cli.hpp"
 
 #include <ltc/shading/ggx_fetch.hpp>
@@ -46,14 +48,19 @@ const char* const usage_text =
     "                 half), raw (<name>_ltc_1.f32 and its <name>_ltc_1.json), glsl (<name>.glsl),\n"
     "                 hlsl (<name>.hlsl): the textures as constant arrays, texel (x, y) at [y * w + x];\n"
     "                 threejs (<name>_threejs.js): an ES module shaped as three.js's RectAreaLightTexturesLib\n"
-    "                 (float and half textures; left out where a value overflows half)\n"
+    "                 (float and half textures; left out where a value overflows half);\n"
+    "                 blender (<name>_eevee_lut.cc, <name>_eevee_lut_vecbase.cc, <name>_eevee_lut.c): the\n"
+    "                 definitions of EEVEE's ltc_mat_ggx and ltc_mag_ggx for the three ways Blender's\n"
+    "                 eevee_lut.hh / .h declare them (float[64][64][4], VecBase<float, 4>[64][64], C\n"
+    "                 float[64 * 64 * 4]); 64 x 64 tables only, as EEVEE's; left out where a value\n"
+    "                 overflows half (EEVEE's utility texture is RGBA16F)\n"
     "  --out DIR      the output directory (created; default .)\n"
     "  --quiet        no report; also -q\n"
     "  --help         this text; also -h\n";
 
 struct arguments {
     std::string table = "ggx";
-    std::vector<std::string> formats{"dds32", "dds16", "raw", "glsl", "hlsl", "threejs"};
+    std::vector<std::string> formats{"dds32", "dds16", "raw", "glsl", "hlsl", "threejs", "blender"};
     std::string out = ".";
     bool quiet = false;
 };
@@ -87,7 +94,8 @@ arguments parse(int argc, char** argv) {
         } else if (name == "--formats") {
             a.formats = split(v.text);
             for (const std::string& f : a.formats)
-                if (f != "dds32" && f != "dds16" && f != "raw" && f != "glsl" && f != "hlsl" && f != "threejs")
+                if (f != "dds32" && f != "dds16" && f != "raw" && f != "glsl" && f != "hlsl" && f != "threejs" &&
+                    f != "blender")
                     return option_status::bad;
         } else if (name == "--out") {
             a.out = v.text;
@@ -172,6 +180,26 @@ void export_table(const arguments& a, const ltc::ltc_table& table, const std::st
         } else {
             const std::string s = ltc::threejs_module(p, name, note);
             write_bytes(dir / (name + "_threejs.js"), s.data(), s.size(), a.quiet);
+        }
+    }
+    if (wants(a, "blender")) {
+        // EEVEE's arrays and its UTIL_TEX_SIZE are 64 x 64, and it uploads them as half floats.
+        if (p.ltc_1.width != 64 || p.ltc_1.height != 64) {
+            if (!a.quiet)
+                std::cout << "  " << name << "_eevee_lut.* left out: EEVEE's tables are 64 x 64, this one is "
+                          << p.ltc_1.width << " x " << p.ltc_1.height << "\n";
+        } else if (ltc::half_overflows(p.ltc_1) + ltc::half_overflows(p.ltc_2) > 0) {
+            std::cerr << "ltc_export: " << name << "_eevee_lut.* left out: EEVEE's RGBA16F utility texture would hold "
+                      << "values beyond float16's range (65504)\n";
+        } else {
+            using ltc::eevee_declaration;
+            for (const auto& [declaration, suffix] :
+                 {std::pair{eevee_declaration::float_arrays, "_eevee_lut.cc"},
+                  std::pair{eevee_declaration::vec_base, "_eevee_lut_vecbase.cc"},
+                  std::pair{eevee_declaration::flat_c, "_eevee_lut.c"}}) {
+                const std::string s = ltc::eevee_lut_source(p, declaration, note);
+                write_bytes(dir / (name + suffix), s.data(), s.size(), a.quiet);
+            }
         }
     }
 }

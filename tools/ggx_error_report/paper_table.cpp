@@ -1,7 +1,9 @@
 // ggx_error_report/paper_table.cpp -- section 10 of the report: what an engine gains by swapping
 // the paper's GGX table (selfshadow/ltc_code's fit/results/ltc.js, the one three.js ships) for the
 // shipped one-lobe table, both shaded as the engines shade (one lobe times the magnitude, the
-// sphere approximation at the horizon) and with exact clipping, against the same ground truth.
+// sphere approximation at the horizon) and with exact clipping, against the same ground truth;
+// and the paper's matrices with the shipped magnitude, the part an engine that scales the lobe
+// by a magnitude of its own (EEVEE since 4.2: its split-sum term) gains.
 // The paper's table is not part of the project: it is read from the peers' folder
 // (../shared/peers/README.md), and the section is skipped, saying why, where it is absent.
 #include "grid.hpp"
@@ -97,6 +99,18 @@ void print_paper_table(const std::vector<config>& grid, const evaluation& ev, co
     const ltc::ltc_table view(paper.data.data(), paper.size, paper.size);
     evaluation pe = evaluate(grid, [&](double c, double r) { return view.fetch<double>(c, r); }, true);
     pe.albedo = ev.albedo;  // the shipped table's: section 1's significant set for both tables
+    // The paper's M^-1 scaled by the shipped magnitude: the swap's gain with the magnitude held fixed.
+    evaluation pm = evaluate(
+        grid,
+        [&](double c, double r) {
+            ltc::ltc_coefficients<double> l = view.fetch<double>(c, r);
+            const ltc::ltc_coefficients<double> own = shipped(c, r);
+            l.magnitude = own.magnitude;
+            l.fresnel = own.fresnel;
+            return l;
+        },
+        true);
+    pm.albedo = ev.albedo;
 
     const auto any = [](const config&) { return true; };
     // The criterion: the light gives more than 5% of the directional albedo.
@@ -111,7 +125,10 @@ void print_paper_table(const std::vector<config>& grid, const evaluation& ev, co
                 "   demo reads it from a table) and with exact clipping in LTC space (\"exact\"). Relative error\n"
                 "   |LTC - GT| / GT against the same ground truth over the same %zu significant configurations as\n"
                 "   section 1, and over the %zu of them where the light gives more than 5%% of the directional\n"
-                "   albedo (GT > 0.05 albedo, the shipped table's magnitude); paper/shipped: the ratio of the means\n",
+                "   albedo (GT > 0.05 albedo, the shipped table's magnitude); paper/shipped: the ratio of the means.\n"
+                "   \"paper M^-1\": the paper's matrices times the shipped table's magnitude, what an engine that\n"
+                "   scales the normalized lobe by a magnitude of its own (EEVEE since 4.2, by its split-sum term)\n"
+                "   gains, the magnitude held fixed; M^-1/shipped: the ratio of its mean to the shipped table's\n",
                 paper.size, paper.size, ltc::ggx::table.width(), ltc::ggx::table.height(), n_all, n_bright);
     char all[32];
     std::snprintf(all, sizeof all, "all (%zu)", n_all);
@@ -126,6 +143,11 @@ void print_paper_table(const std::vector<config>& grid, const evaluation& ev, co
                         100 * s[t][1].mean, 100 * s[t][1].p95, 100 * s[t][1].max);
         std::printf("  %-8s %-13s | %7.2f %17s | %7.2f\n", method_names[m], "paper/shipped", s[0][0].mean / s[1][0].mean, "",
                     s[0][1].mean / s[1][1].mean);
+        const stats sm[2] = {summarize(rel_errors(grid, pm, m, any)), summarize(rel_errors(grid, pm, m, bright))};
+        std::printf("  %-8s %-13s | %6.2f%% %6.2f%% %7.2f%%  | %6.2f%% %6.2f%% %7.2f%%\n", method_names[m], "paper M^-1",
+                    100 * sm[0].mean, 100 * sm[0].p95, 100 * sm[0].max, 100 * sm[1].mean, 100 * sm[1].p95, 100 * sm[1].max);
+        std::printf("  %-8s %-13s | %7.2f %17s | %7.2f\n", method_names[m], "M^-1/shipped", sm[0].mean / s[1][0].mean, "",
+                    sm[1].mean / s[1][1].mean);
     }
 }
 

@@ -1,6 +1,6 @@
 // ltc/tables/export.hpp -- a table (ltc/tables/ltc_table.hpp) in the formats GPU engines load: the
 // paper's two RGBA textures, IEEE half floats, DDS files, raw floats with a JSON descriptor,
-// GLSL/HLSL constant arrays and a three.js module.
+// GLSL/HLSL constant arrays, a three.js module and the C/C++ arrays Blender's EEVEE compiles.
 //
 //   const ltc::paper_textures tex = ltc::to_paper_textures(ltc::ggx::table);
 //   std::vector<unsigned char> dds = ltc::write_dds(tex.ltc_1, ltc::dds_format::rgba16_float);
@@ -375,6 +375,81 @@ inline std::string threejs_module(const paper_textures& p, const std::string& na
     s += "\t}\n";
     s += "};\n\n";
     s += "export { RectAreaLightTexturesLib };\n";
+    return s;
+}
+
+/// How the Blender tree at hand declares EEVEE's LTC arrays (eevee_lut.hh or eevee_lut.h); the
+/// definitions must match it, and all three hold the same floats in the same order.
+enum class eevee_declaration {
+    float_arrays,  ///< namespace blender::eevee::lut { const float ltc_mat_ggx[64][64][4]; ltc_mag_ggx[64][64][2] }
+    vec_base,      ///< namespace blender::eevee::lut { const VecBase<float, 4> ltc_mat_ggx[64][64]; VecBase<float, 2> ... }
+    flat_c         ///< no namespace (C, or C++ under eevee_lut.h's extern "C"): const float ltc_mat_ggx[64 * 64 * 4]; ...
+};
+
+/// The definitions of EEVEE's two LTC arrays (Blender's source/blender/draw/engines/eevee*/
+/// eevee_lut.cc or .c) holding the textures' texels, for a 64 x 64 table (EEVEE's UTIL_TEX_SIZE):
+///   ltc_mat_ggx[y][x] = ltc_1 texel (x, y) = (m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2])
+///   ltc_mag_ggx[y][x] = (ltc_2 texel (x, y).r, .g) = (magnitude, fresnel)
+/// (flat_c: [(y * 64 + x) * 4 + c], the same order), x = roughness node, y = sqrt(1 - cos theta_v)
+/// node: EEVEE copies them row by row into layers of its utility texture, samples at
+/// uv = (roughness, sqrt(1 - cos theta_v)) * 63 / 64 + 0.5 / 64 and builds
+/// M^-1 = mat3(vec3(t.x, 0, t.y), vec3(0, 1, 0), vec3(t.z, 0, t.w)), the paper's layout, and its
+/// ltc_mag_ggx is the paper's ltc_2.xy. Each float is written as a literal that reads back to it.
+/// The text reopens its namespace, so it can be appended to eevee_lut.cc once the two arrays'
+/// old definitions are deleted there.
+inline std::string eevee_lut_source(const paper_textures& p, eevee_declaration declaration,
+                                    const std::string& note = "") {
+    const bool flat = declaration == eevee_declaration::flat_c;
+    const std::string w = std::to_string(p.ltc_1.width), h = std::to_string(p.ltc_1.height);
+    std::string s = "/* EEVEE's LTC arrays ltc_mat_ggx and ltc_mag_ggx, written by ltc_export from the ltc library's\n";
+    s += std::string(" * table, in place of the definitions in ") + (flat ? "eevee_lut.c or eevee_lut.cc" : "eevee_lut.cc") +
+         " (delete those, append this).\n";
+    s += " * [y][x]: x = roughness node (roughness = x / " + std::to_string(p.ltc_1.width - 1) +
+         "), y = sqrt(1 - cos theta_v) node (y / " + std::to_string(p.ltc_1.height - 1) + ").\n";
+    s += " * ltc_mat_ggx = (m_inv[0][0], m_inv[0][2], m_inv[2][0], m_inv[2][2]) of M^-1 / M^-1[1][1], column-major;\n";
+    s += " * ltc_mag_ggx = (magnitude, fresnel): int rho cos, int rho cos (1 - V.H)^5. */\n";
+    if (!note.empty()) s += "/* " + note + " */\n";
+    if (!flat) s += "\nnamespace blender::eevee::lut {\n";
+    // One array: `per_line` texels a line; nested, each row of texels and each texel in braces.
+    const auto array = [&](const char* declarator, const rgba_texture& t, std::size_t channels, int per_line) {
+        s += std::string("\n") + declarator + " = {\n";
+        for (int y = 0; y < t.height; ++y) {
+            if (!flat) s += "    {";
+            for (int x = 0; x < t.width; ++x) {
+                const bool line_start = x % per_line == 0;
+                s += line_start ? (flat ? "    " : x == 0 ? "" : "\n     ") : " ";
+                if (!flat) s += "{";
+                for (std::size_t c = 0; c < channels; ++c) {
+                    s += detail::float_literal(t.texel(x, y, static_cast<int>(c))) + "f";
+                    if (c + 1 < channels) s += ", ";
+                }
+                if (!flat) s += "}";
+                const bool last = x + 1 == t.width;
+                if (!last || flat) s += ",";
+                if (flat && (last || (x + 1) % per_line == 0)) s += "\n";
+            }
+            if (!flat) s += y + 1 < t.height ? "},\n" : "}\n";
+        }
+        s += "};\n";
+    };
+    std::string mat, mag;
+    switch (declaration) {
+        case eevee_declaration::float_arrays:
+            mat = "const float ltc_mat_ggx[" + h + "][" + w + "][4]";
+            mag = "const float ltc_mag_ggx[" + h + "][" + w + "][2]";
+            break;
+        case eevee_declaration::vec_base:
+            mat = "const VecBase<float, 4> ltc_mat_ggx[" + h + "][" + w + "]";
+            mag = "const VecBase<float, 2> ltc_mag_ggx[" + h + "][" + w + "]";
+            break;
+        case eevee_declaration::flat_c:
+            mat = "const float ltc_mat_ggx[" + h + " * " + w + " * 4]";
+            mag = "const float ltc_mag_ggx[" + h + " * " + w + " * 2]";
+            break;
+    }
+    array(mat.c_str(), p.ltc_1, 4, 2);
+    array(mag.c_str(), p.ltc_2, 2, 4);
+    if (!flat) s += "\n}  // namespace blender::eevee::lut\n";
     return s;
 }
 
