@@ -29,7 +29,7 @@ endmacro()
 
 set(_hex7 "[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f]+")
 file(GLOB_RECURSE _texts RELATIVE "${_root}"
-  "${_root}/include/*.hpp" "${_root}/include/*.inc" "${_root}/docs/*.md")
+  "${_root}/include/*.hpp" "${_root}/include/*.inc" "${_root}/include/*.glsl" "${_root}/docs/*.md")
 list(APPEND _texts README.md CHANGELOG.md)
 list(FILTER _texts EXCLUDE REGEX "^docs/results/|^include/ltc/tables/(ggx|charlie)")
 foreach(f IN LISTS _texts)
@@ -110,7 +110,8 @@ else()
 endif()
 
 # 4. Header preambles and measured figures in header comments.
-file(GLOB_RECURSE _headers RELATIVE "${_root}" "${_root}/include/*.hpp" "${_root}/include/*.inc")
+file(GLOB_RECURSE _headers RELATIVE "${_root}" "${_root}/include/*.hpp" "${_root}/include/*.inc"
+  "${_root}/include/*.glsl")
 foreach(re IN LISTS _header_exempt)
   list(FILTER _headers EXCLUDE REGEX "${re}")
 endforeach()
@@ -167,7 +168,7 @@ foreach(f IN LISTS _headers)
   endforeach()
   if(_pragma GREATER 0)
     math(EXPR _pre "${_pragma} - 1")
-  elseif(f MATCHES "\\.inc$")
+  elseif(f MATCHES "\\.(inc|glsl)$")
     set(_pre ${_leading})
   else()
     _fail("${f}: no #pragma once")

@@ -1,11 +1,6 @@
 // The Vulkan compute runner (tests/support/vulkan_compute.hpp) on whichever device is there
 // (lavapipe in CI): tests/support/vulkan_selftest.comp computes out[i] = in[i] * 2 + add, which
 // the C++ here computes too, bit for bit. Without a device every test case warns and passes.
-//
-// Only ltc_vulkan_tests (tests/CMakeLists.txt) defines LTC_VULKAN_TESTS: the glob of test_*.cpp
-// puts this file in ltc_tests too, which neither links Vulkan nor compiles the shaders, and where
-// it is then empty.
-#ifdef LTC_VULKAN_TESTS
 #include <catch2/catch.hpp>
 
 #include "support/vulkan_compute.hpp"
@@ -248,4 +243,3 @@ TEST_CASE("vulkan runner: what the device does where Vulkan leaves a choice", "[
 
 }  // namespace ltc_test_vulkan_compute
 
-#endif  // LTC_VULKAN_TESTS

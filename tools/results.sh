@@ -28,10 +28,11 @@ wanted shape_error.md && targets+=(shape_error_report)
 wanted textured_error.md && targets+=(textured_error_report)
 wanted sheen_error.md && targets+=(sheen_error_report)
 wanted anisotropic_error.md && targets+=(anisotropic_error_report)
+wanted glsl_port.md && targets+=(ltc_vulkan_tests)
 { wanted speed.md || wanted summary.md; } && targets+=(bench_batch bench_shading)
 if [[ ${#targets[@]} -eq 0 ]]; then
   echo "results: nothing to write (files: ggx_error.md shape_error.md textured_error.md sheen_error.md" \
-       "anisotropic_error.md speed.md summary.md)" >&2
+       "anisotropic_error.md glsl_port.md speed.md summary.md)" >&2
   exit 2
 fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DLTC_BUILD_BENCHMARKS=ON >/dev/null
@@ -58,6 +59,10 @@ wanted sheen_error.md && report sheen_error.md "Charlie sheen shading against Mo
   "$build/tools/sheen_error_report"
 wanted anisotropic_error.md && report anisotropic_error.md "Anisotropic GGX against Monte Carlo ground truth (this table, the published 8^4 table, the isotropic table)" \
   "$build/tools/anisotropic_error_report" --peers "$root/../shared/peers/anisotropic"
+# The GLSL port's test prints what it checked (its WARN line); it needs glslang, the Vulkan loader
+# and a Vulkan device (lavapipe will do).
+wanted glsl_port.md && report glsl_port.md "The GLSL port against the C++ (tests/test_glsl_port.cpp on a Vulkan device)" \
+  "$build/tests/ltc_vulkan_tests" "[glsl]" --reporter compact
 if wanted speed.md || wanted summary.md; then
   echo "results: benchmarks" >&2
   mkdir -p "$build/speed"

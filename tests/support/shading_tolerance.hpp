@@ -31,6 +31,9 @@ namespace ltc_test::shading_tolerance {
 template <typename T>
 constexpr double unit_roundoff = std::numeric_limits<T>::epsilon() / 2;
 
+/// x clamped to [0, 1], NaN read as 0 (ltc_table's rule for its inputs).
+inline double saturate(double x) { return x > 0 ? (x < 1 ? x : 1) : 0; }
+
 // ---- the frame (tests/test_batch_lanes.cpp's file comment) --------------------------------
 
 inline double cross_bound(double delta_a, double a, double delta_b, double b, double u) {
@@ -65,8 +68,8 @@ inline frame_bounds frame(const glm::vec3& N, const glm::vec3& V, double k = 1) 
 /// times that tolerance (the two sides may snap differently).
 inline double fetch(const ltc::ltc_table& table, float cos_theta_v, float roughness, int c, double k = 1) {
     const double u = k * unit_roundoff<float>;
-    const double su = std::sqrt(1.0 - std::clamp(double(cos_theta_v), 0.0, 1.0)) * (table.width() - 1);
-    const double sv = std::clamp(double(roughness), 0.0, 1.0) * (table.height() - 1);
+    const double su = std::sqrt(1.0 - saturate(cos_theta_v)) * (table.width() - 1);
+    const double sv = saturate(roughness) * (table.height() - 1);
     const int t0 = std::min(int(su), table.width() - 2), a0 = std::min(int(sv), table.height() - 2);
     double big = 0;
     for (int dt = 0; dt < 2; ++dt)
