@@ -225,10 +225,11 @@ struct bit_comparison {
 /// value is at least 1e-3 of that light's largest value of that channel over the G-buffer (the
 /// relative difference of a near-zero value, e.g. a mirror's 1e-8 specular off its reflection,
 /// says nothing), with the item where it occurs; and the largest |got - want| relative to that
-/// largest value (the difference on the image's scale).
+/// largest value (the difference on the image's scale); and how many items have a channel
+/// (above the same floor) whose relative difference exceeds 1e-4.
 struct relative_comparison {
     double max_relative = 0, max_of_peak = 0;
-    std::size_t at = 0;
+    std::size_t at = 0, beyond = 0, items = 0;
 };
 
 relative_comparison compare_relative(const std::vector<ltc::shading_result<float>>& got,
@@ -244,13 +245,18 @@ relative_comparison compare_relative(const std::vector<ltc::shading_result<float
         for (std::size_t i = base; i < base + points; ++i) {
             float g[6], w[6];
             channels(got[i], g), channels(want[i], w);
+            ++r.items;
+            bool beyond = false;
             for (int c = 0; c < 6; ++c) {
                 if (!(peak[c] > 0)) continue;
                 const double diff = std::abs(double(g[c]) - double(w[c]));
                 const double size = std::max(std::abs(double(g[c])), std::abs(double(w[c])));
                 r.max_of_peak = std::max(r.max_of_peak, diff / peak[c]);
-                if (size >= 1e-3 * peak[c] && diff / size > r.max_relative) r.max_relative = diff / size, r.at = i;
+                if (size < 1e-3 * peak[c]) continue;
+                beyond = beyond || diff / size > 1e-4;
+                if (diff / size > r.max_relative) r.max_relative = diff / size, r.at = i;
             }
+            r.beyond += beyond ? 1 : 0;
         }
     }
     return r;
@@ -261,9 +267,10 @@ void print_relative(const char* what, const relative_comparison& r, const std::v
     const ltc::surface<float>& s = points[r.at % points.size()];
     const ltc::shading_frame<float> f = ltc::make_shading_frame(s.normal, s.view);
     std::printf("%s: largest relative difference %.3g (light %zu, point %zu: cos theta_v %.9g, roughness %.3g), "
-                "largest difference relative to the light's largest value %.3g\n",
+                "largest difference relative to the light's largest value %.3g; %zu of %zu items differ by more "
+                "than 1e-4 relative\n",
                 what, r.max_relative, r.at / points.size(), r.at % points.size(), double(f.cos_theta_v),
-                double(s.roughness), r.max_of_peak);
+                double(s.roughness), r.max_of_peak, r.beyond, r.items);
 }
 
 template <typename T>
