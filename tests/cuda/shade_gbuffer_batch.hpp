@@ -3,7 +3,11 @@
 // translation unit (shade_gbuffer_batch.cpp) compiled by the host compiler alone, because ltc's
 // batches run in SIMD lanes only outside nvcc (__CUDACC__ leaves them the scalar path,
 // ltc/shading/detail/simd.hpp): the ratio against the device is against the batch a CPU renderer
-// would use.
+// would use. The two translation units share the names of ltc's inline functions (the ABI tag of
+// ltc/config.hpp tells LTC_NO_SIMD apart, not __CUDACC__), though nvcc's definitions hold the
+// lanes of ltc/core/detail/f32x4.hpp as a plain struct and the host compiler's as a vector: the
+// linker keeps one of each, and both give the same bits (f32x4.hpp, quad_lanes.hpp), so the
+// host side of shade_gbuffer_check.cu's comparison (a) is the same whichever it keeps.
 #pragma once
 
 #include <ltc/shading/surface.hpp>
