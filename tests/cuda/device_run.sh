@@ -8,9 +8,10 @@
 #
 # Needs nvcc (NVCC, /usr/local/cuda/bin/nvcc, or nvcc on PATH) and GLM: where <glm/glm.hpp> is not
 # in the compiler's include path (a machine without libglm-dev, and no internet to fetch it), set
-# LTC_GLM_INCLUDE to a directory holding a copy of glm/ (e.g. /usr/include of a machine that has
-# it, copied into the working tree). Takes well under a minute to build and a few seconds to run on
-# a 16-core machine (the host reference and the CPU batch dominate the run: one thread each).
+# LTC_GLM_INCLUDE to a directory holding a copy of glm/ (absolute, or relative to the repository
+# root; e.g. the glm/ of a machine's /usr/include copied into the working tree). Takes well under
+# a minute to build and seconds to run on a 16-core machine (the host reference and the CPU batch,
+# one thread each, take most of the run).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -22,11 +23,15 @@ if [[ -z "$nvcc" ]]; then
   echo "device_run.sh: no nvcc (set NVCC)" >&2
   exit 3
 fi
-if ! echo '#include <glm/glm.hpp>' | g++ -x c++ -std=c++17 ${LTC_GLM_INCLUDE:+-I "$LTC_GLM_INCLUDE"} -fsyntax-only - 2>/dev/null; then
+glm_probe=(g++ -x c++ -std=c++17 -fsyntax-only)
+[[ -n "${LTC_GLM_INCLUDE:-}" ]] && glm_probe+=(-I "$LTC_GLM_INCLUDE")
+if ! echo '#include <glm/glm.hpp>' | "${glm_probe[@]}" - 2>/dev/null; then
   echo "device_run.sh: <glm/glm.hpp> not found (set LTC_GLM_INCLUDE to a directory holding glm/)" >&2
   exit 3
 fi
-command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader || true
+if command -v nvidia-smi >/dev/null; then
+  nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader || true
+fi
 "$nvcc" --version | tail -n1
 nproc
 

@@ -184,7 +184,8 @@ ltc::polygon_light<float> make_light(const light_spec& spec, const glm::vec3* ve
     const std::size_t n = spec.vertices.size();
     switch (spec.kind) {
         case light_kind::counter_clockwise_front:
-            return ltc::polygon_light<float>::one_sided(vertices, n, ltc::winding::counter_clockwise_front, spec.radiance);
+            return ltc::polygon_light<float>::one_sided(vertices, n, ltc::winding::counter_clockwise_front,
+                                                        spec.radiance);
         case light_kind::clockwise_front:
             return ltc::polygon_light<float>::one_sided(vertices, n, ltc::winding::clockwise_front, spec.radiance);
         case light_kind::two_sided: break;
@@ -316,15 +317,18 @@ int main(int argc, char** argv) {
     for (const light_spec& s : specs) host_lights.push_back(make_light(s, s.vertices.data()));
 
     // (a)'s reference: the host's ltc::shade, the same model over the host table.
-    const ltc::ggx::one_lobe_of host_model{ltc::ltc_table(ltc::tables::ggx_data, ltc::tables::ggx_size, ltc::tables::ggx_size)};
+    const ltc::ggx::one_lobe_of host_model{
+        ltc::ltc_table(ltc::tables::ggx_data, ltc::tables::ggx_size, ltc::tables::ggx_size)};
     std::vector<ltc::shading_result<float>> host_per_light(n * specs.size()), host_sum(n);
     const auto scalar_start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < n; ++i) {
         for (int l = 0; l < light_count; ++l)
-            host_per_light[std::size_t(l) * n + i] = shade_point(host_model, points[i], &host_lights[std::size_t(l)], 1);
+            host_per_light[std::size_t(l) * n + i] =
+                shade_point(host_model, points[i], &host_lights[std::size_t(l)], 1);
         host_sum[i] = shade_point(host_model, points[i], host_lights.data(), light_count);
     }
-    const double scalar_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - scalar_start).count();
+    const double scalar_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - scalar_start).count();
 
     const batch_run batch = shade_gbuffer_batch(points, specs, cpu_seconds);
     const double items = double(n) * light_count;
