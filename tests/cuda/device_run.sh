@@ -10,7 +10,7 @@
 # in the compiler's include path (a machine without libglm-dev, and no internet to fetch it), set
 # LTC_GLM_INCLUDE to a directory holding a copy of glm/ (absolute, or relative to the repository
 # root; e.g. the glm/ of a machine's /usr/include copied into the working tree). Takes well under
-# a minute to build and seconds to run on a 16-core machine (the host reference and the CPU batch,
+# a minute to build and under a minute to run on a 16-core machine (the host reference and the CPU batch,
 # one thread each, take most of the run).
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -24,8 +24,9 @@
 //   - the polygon light (ltc/shading/lights/polygon_light.hpp, polygon_light_integrals.hpp):
 //     the local vertices (rescaled: a division by the largest |coordinate|), M^-1 p, the
 //     horizon clipping of the quad path (ltc/core/detail/quad_lanes.hpp: the plain-struct lanes
-//     under nvcc on both sides, whose comment states the same bits in every build) and of the
-//     general path (ltc/core/horizon_clip.hpp, safe_normalize), the determinant, the sidedness;
+//     on the device; on the host those or the vector ones, shade_gbuffer_batch.hpp says why
+//     either: the same bits in every build, as its comment states) and of the general path
+//     (ltc/core/horizon_clip.hpp, safe_normalize), the determinant, the sidedness;
 //   - the edge terms with the float default, edge_policy::minimax_rational
 //     (ltc/core/edge_policy.hpp): a rational function (multiply-adds, one division), pi / |a x b|
 //     with glm::length's sqrt, and std::copysign for the horizon edge -- no atan2, acos or other
@@ -38,8 +39,8 @@
 // bits and prints the largest distance in ulps where they differ. One allowance: a zero result
 // may come with the other sign. The device compiler selects PTX max.f32 for apply_sidedness's
 // `x > 0 ? x : 0` (ltc/core/sidedness.hpp; seen in the PTX of this file), and this check does
-// not rest on max.f32 ordering -0 below +0; a signed integral of -0 then gives a one-sided light's
-// contribution as -0 on one side and +0 on the other, the same value (they are counted apart).
+// not rest on max.f32 ordering -0 below +0: where a signed integral is -0, a one-sided light's
+// contribution may be -0 on the device and +0 on the host, the same value (counted apart).
 // The PTX of this program's kernel holds only add, sub, mul, div, sqrt and rcp in their .rn
 // forms, abs, neg, copysign, min and max, comparisons and conversions: no fma, no .approx, no
 // rsqrt, no .ftz.
@@ -48,9 +49,10 @@
 // tests/test_batch_shade.cpp derives and checks (its file comment); with (a), that bound is the
 // one between the batch and the device. This program reports the largest difference relative to
 // the value rather than deriving it again (and where it is: the largest are at V == N with a low
-// roughness, where one rounding of cos theta_v below 1 moves the table's u = sqrt(1 - cos theta_v)
-// by sqrt(eps), a hundredth of a cell, and a sharp lobe's shear with it: a real sensitivity of the
-// table's parameterization, not an error of either path).
+// roughness, where one rounding of cos theta_v just below 1 moves the table's coordinate
+// u = sqrt(1 - cos theta_v) by sqrt(eps / 2), about a sixtieth of a cell of the 64-node table, and
+// a sharp lobe's shear with it: a real sensitivity of the table's parameterization, not an error
+// of either path).
 //
 // Usage: shade_gbuffer_check [points [gpu_repetitions [cpu_seconds]]] (defaults 4096, 20, 0.5).
 // Exit status: 0 when every check passes, or when no CUDA device is found ("skipped: no CUDA
