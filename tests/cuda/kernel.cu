@@ -2,6 +2,10 @@
 // this file with nvcc, warnings as errors, when /usr/local/cuda/bin/nvcc exists.
 #include <ltc/ltc.hpp>
 
+// shade_gbuffer: world-space shading of a G-buffer with ltc::shade over a device table (run and
+// checked against the host by shade_gbuffer_check.cu).
+#include "shade_gbuffer.cuh"
+
 __global__ void integrate_quads(const glm::vec3* quads, const glm::mat3* m_inv, float* out, int count) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= count) return;
@@ -51,19 +55,4 @@ __global__ void screen_points(glm::vec4* out, int width, int count, unsigned lon
     if (i >= count) return;
     const glm::vec2 p = ltc::screen_point<float>(unsigned(i % width), unsigned(i / width), seed);
     out[i] = glm::vec4(p, ltc::detail::lattice_point(0, n, p, true));
-}
-
-// World-space shading of a G-buffer with one polygon light and the one-lobe model over a table in
-// device memory (ltc::ggx::one_lobe_of: the shipped tables are host data). The host copies
-// ltc::tables::ggx_data (ltc::tables::ggx_size^2 nodes, 6 floats each) and the light's vertices to
-// the device and builds the light over the device copy with one_sided(vertices, n, winding,
-// radiance) or two_sided (which check the pointer, not the vertices), so that `light` refers to
-// device memory.
-__global__ void shade_gbuffer(const ltc::surface<float>* points, int count, const ltc::polygon_light<float>* light,
-                              const float* table_data, int table_size, glm::vec3* out) {
-    const int i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i >= count) return;
-    const ltc::ggx::one_lobe_of model{ltc::ltc_table(table_data, table_size, table_size)};
-    const ltc::shading_result<float> r = ltc::shade(model, points[i], *light);
-    out[i] = r.specular + r.diffuse;
 }
