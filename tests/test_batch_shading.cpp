@@ -21,6 +21,7 @@
 #include "support/clip_comparison.hpp"
 #include "support/rng.hpp"
 #include "support/rounding_bound.hpp"
+#include "support/shading_tolerance.hpp"
 
 #include <ltc/shading/batch_shading.hpp>
 #include <ltc/shading/batch_cosine_lobe.hpp>
@@ -96,56 +97,13 @@ struct results_soa_of {
 };
 using results_soa = results_soa_of<float>;
 
-// The tolerance of the file comment for a point shaded in `frame` with `lobe`, u the unit
-// roundoff of T.
-template <typename T>
-ltc::polygon_light_result<double> tolerance(const ltc::shading_frame<T>& frame, const ltc::ltc_coefficients<T>& lobe,
-                                            const glm::vec<3, T>& P, const glm::vec<3, T>& F0,
-                                            const glm::vec<3, T>& albedo, const glm::vec<3, T>& radiance,
-                                            const std::vector<glm::vec<3, T>>& light,
-                                            const ltc::polygon_light_result<T>& value) {
-    constexpr double u = unit_roundoff<T>;
-    std::vector<glm::vec<3, T>> local;
-    for (const auto& p : light) local.push_back(frame.to_local(p - P));
-    // The two paths compute the local vertices differently: each component within 4 u |p - P| of
-    // the exact one on either side (the subtraction, or the scalar path's division by the largest
-    // coordinate, and a dot product of three terms), so the local directions within 8 sqrt(3) u
-    // of each other. M^-1 amplifies a direction change by its conditioning at the vertex,
-    // kappa_p = | |M^-1| |l| | / |M^-1 l|; the integral then moves by at most the region term of
-    // tests/support/rounding_bound.hpp for those direction changes.
-    using namespace ltc_test::polygon_integration;
-    poly_t q_e, q_i;
-    std::vector<double> d_e, d_i;
-    const glm::dmat3 m(lobe.m_inv), abs_m = glm::dmat3(glm::abs(m[0]), glm::abs(m[1]), glm::abs(m[2]));
-    for (const auto& l : local) {
-        const glm::dvec3 ld(l), ql = m * ld;
-        q_e.push_back(ld), q_i.push_back(ql);
-        d_e.push_back(8 * std::sqrt(3.0));
-        d_i.push_back(8 * std::sqrt(3.0) * glm::length(abs_m * glm::abs(ld)) / glm::length(ql));
-    }
-    const double tol_e = ltc_test::clip_tolerance<Policy>(glm::mat<3, 3, T>(T(1)), local) +
-                         u * rounding_parts(form::cosine, q_e, d_e, 0).region / (2 * ltc_test::kPi);
-    const double tol_i = ltc_test::clip_tolerance<Policy>(lobe.m_inv, local) +
-                         u * rounding_parts(form::cosine, q_i, d_i, 0).region / (2 * ltc_test::kPi);
-    ltc::polygon_light_result<double> t;
-    for (int c = 0; c < 3; ++c) {
-        const double brdf = std::abs(double(F0[c]) * lobe.magnitude + (1 - double(F0[c])) * lobe.fresnel);
-        t.specular[c] = double(radiance[c]) * brdf * tol_i + 4 * u * std::abs(value.specular[c]);
-        t.diffuse[c] = double(albedo[c]) * double(radiance[c]) * tol_e + 4 * u * std::abs(value.diffuse[c]);
-    }
-    return t;
+// The tolerance of the file comment for a point shaded in `frame` with `lobe`
+// (tests/support/shading_tolerance.hpp: the batch kernels' bound, u the unit roundoff of T).
+template <typename... Args>
+auto tolerance(const Args&... args) {
+    return ltc_test::shading_tolerance::lobe<Policy>(args...);
 }
-
-template <typename T>
-std::size_t violations(const ltc::polygon_light_result<T>& got, const ltc::polygon_light_result<T>& want,
-                       const ltc::polygon_light_result<double>& tol) {
-    std::size_t v = 0;
-    for (int c = 0; c < 3; ++c) {
-        v += !(std::abs(double(got.specular[c]) - want.specular[c]) <= tol.specular[c]);
-        v += !(std::abs(double(got.diffuse[c]) - want.diffuse[c]) <= tol.diffuse[c]);
-    }
-    return v;
-}
+using ltc_test::shading_tolerance::violations;
 
 }  // namespace
 
