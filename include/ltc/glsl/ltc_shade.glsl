@@ -19,7 +19,6 @@
 #define LTC_MAX_VERTICES 8
 #endif
 #define LTC_TABLE_SIZE 32
-#define LTC_MAX_CLIPPED (LTC_MAX_VERTICES + LTC_MAX_VERTICES / 2)  // ltc::clipped_capacity
 
 float ltc_table_node(int lobe, int t, int a, int c);
 
